@@ -1,0 +1,143 @@
+//! Latching an encounter once risk arises, and releasing it when the vessels
+//! have passed (notes, "COLREGs geometry": latch so that the classification
+//! does not flip at sector boundaries).
+
+use crate::encounter::{Encounter, classify};
+use crate::parameters::RuleParameters;
+use crate::risk::assess_risk;
+use crate::vessel::VesselState;
+use serde::{Deserialize, Serialize};
+
+/// An encounter in force: its type, fixed when risk was first detected, and
+/// ownship's course and speed at that moment (the reference against which
+/// turns and stand-on drift are judged).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EncounterLatch {
+    /// The encounter type, fixed while the latch holds.
+    pub encounter: Encounter,
+    /// Ownship's course when the encounter began, radians.
+    pub reference_course_rad: f64,
+    /// Ownship's speed when the encounter began, m/s.
+    pub reference_speed_mps: f64,
+    /// When the encounter began, seconds.
+    pub latched_at_s: f64,
+}
+
+impl EncounterLatch {
+    /// Latches `encounter` with ownship's present course and speed as reference.
+    #[must_use]
+    pub fn new(encounter: Encounter, own: &VesselState, time_s: f64) -> Self {
+        Self {
+            encounter,
+            reference_course_rad: own.course_rad,
+            reference_speed_mps: own.speed_mps,
+            latched_at_s: time_s,
+        }
+    }
+}
+
+/// Whether ownship and the target have passed each other: the range is
+/// opening and the velocities point more than
+/// [`passed_angle_rad`](RuleParameters::passed_angle_rad) away from the line of
+/// sight — both of them in head-on and crossing, either of them in the
+/// overtaking encounters (the overtaken vessel keeps pointing at the other).
+/// A range opening beyond MTD also ends the encounter.
+#[must_use]
+pub fn has_passed(
+    own: &VesselState,
+    target: &VesselState,
+    encounter: Encounter,
+    parameters: &RuleParameters,
+) -> bool {
+    let line_of_sight = target.position_m - own.position_m;
+    let relative_velocity = own.velocity_mps() - target.velocity_mps();
+    let opening = line_of_sight.dot(relative_velocity) <= 0.0;
+    if !opening {
+        return false;
+    }
+    if line_of_sight.length() > parameters.mtd_m {
+        return true;
+    }
+    let points_away = |velocity: glam::DVec2, towards: glam::DVec2| {
+        velocity == glam::DVec2::ZERO
+            || velocity.angle_to(towards).abs() > parameters.passed_angle_rad
+    };
+    let own_away = points_away(own.velocity_mps(), line_of_sight);
+    let target_away = points_away(target.velocity_mps(), -line_of_sight);
+    match encounter {
+        Encounter::Overtaking | Encounter::BeingOvertaken => own_away || target_away,
+        _ => own_away && target_away,
+    }
+}
+
+/// One step of the latch: keeps a latched encounter until the vessels have
+/// passed; latches a new one when risk of collision arises and a rule applies.
+///
+/// ```
+/// use vorrt_colregs::{update_latch, Encounter, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let target = VesselState::new(DVec2::new(0.0, 6000.0), std::f64::consts::PI, 6.0, 50.0);
+/// let latch = update_latch(None, &own, &target, 0.0, &params).expect("risk");
+/// assert_eq!(latch.encounter, Encounter::HeadOn);
+/// ```
+#[must_use]
+pub fn update_latch(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    target: &VesselState,
+    time_s: f64,
+    parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
+    match current {
+        Some(latch) if has_passed(own, target, latch.encounter, parameters) => None,
+        Some(latch) => Some(latch),
+        None => {
+            if !assess_risk(own, target, parameters).at_risk {
+                return None;
+            }
+            match classify(own, target, parameters) {
+                Encounter::None => None,
+                encounter => Some(EncounterLatch::new(encounter, own, time_s)),
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn head_on_latch_releases_after_passing() {
+        let params = RuleParameters::default();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let target = VesselState::new(DVec2::new(0.0, 6000.0), PI, 6.0, 50.0);
+        let latch = update_latch(None, &own, &target, 0.0, &params);
+        assert!(latch.is_some());
+        // 10 minutes later, offset 500 m: the two have passed.
+        let own_later = VesselState::new(DVec2::new(500.0, 3600.0), 0.0, 6.0, 50.0);
+        let target_later = VesselState::new(DVec2::new(0.0, 2400.0), PI, 6.0, 50.0);
+        assert!(update_latch(latch, &own_later, &target_later, 600.0, &params).is_none());
+    }
+
+    #[test]
+    fn latch_holds_while_converging() {
+        let params = RuleParameters::default();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let target = VesselState::new(DVec2::new(3000.0, 3000.0), 1.5 * PI, 6.0, 50.0);
+        let latch = update_latch(None, &own, &target, 0.0, &params).expect("risk");
+        assert_eq!(latch.encounter, Encounter::CrossingGiveWay);
+        // Ownship has turned hard to starboard: the geometry now looks different,
+        // but the latch keeps the encounter type.
+        let turned = VesselState::new(DVec2::new(200.0, 400.0), 0.5 * PI, 6.0, 50.0);
+        let target_later = target.advanced(60.0);
+        assert_eq!(
+            update_latch(Some(latch), &turned, &target_later, 60.0, &params).map(|l| l.encounter),
+            Some(Encounter::CrossingGiveWay)
+        );
+    }
+}

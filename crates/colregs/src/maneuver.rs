@@ -1,0 +1,286 @@
+//! Which ownship velocities COLREGs allow in an encounter in force.
+//!
+//! For a latched encounter and a candidate velocity (course and speed),
+//! [`check_maneuver`] answers `Ok(())` or names the rule the candidate breaks:
+//! - **head-on** (rule 14): no turn to port of the course held when the
+//!   encounter began, and the target must pass port to port;
+//! - **crossing, give way** (rules 15, 16): no turn to port, and never cross
+//!   ahead of the stand-on vessel;
+//! - **overtaking** (rule 13): either side; keeping clear is the clearance
+//!   check's business, not this one's;
+//! - **stand on** (rule 17): while the target is farther than
+//!   [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m), keep
+//!   course and speed within the stated tolerances (17(a)(i)); nearer, ownship
+//!   may act (17(a)(ii), 17(b)) but not turn to port for a vessel on its own
+//!   port side (17(c)).
+//!
+//! Turns are measured from the latch's reference course, so a return toward
+//! the original course after a starboard turn is not a port turn, while any
+//! course to port of it is.
+
+use crate::encounter::Encounter;
+use crate::latch::EncounterLatch;
+use crate::parameters::RuleParameters;
+use crate::passing::{PassingSide, crosses_ahead, passing_side};
+use crate::vessel::VesselState;
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+use vorrt_geometry::angle;
+
+/// The rule a candidate manoeuvre would break.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ManeuverViolation {
+    /// A turn to port in head-on or give-way crossing (rules 14(a), 15, 16).
+    PortTurn,
+    /// The target would pass starboard to starboard in head-on (rule 14(a)).
+    StarboardPassing,
+    /// Ownship would cross ahead of a stand-on vessel (rule 15).
+    CrossingAhead,
+    /// A stand-on vessel changed course before it may act (rule 17(a)(i)).
+    StandOnCourseChange,
+    /// A stand-on vessel changed speed before it may act (rule 17(a)(i)).
+    StandOnSpeedChange,
+    /// A stand-on vessel turned to port for a vessel on its own port side (rule 17(c)).
+    PortTurnForPortVessel,
+}
+
+impl ManeuverViolation {
+    /// Every violation, in a fixed order.
+    pub const ALL: [ManeuverViolation; 6] = [
+        ManeuverViolation::PortTurn,
+        ManeuverViolation::StarboardPassing,
+        ManeuverViolation::CrossingAhead,
+        ManeuverViolation::StandOnCourseChange,
+        ManeuverViolation::StandOnSpeedChange,
+        ManeuverViolation::PortTurnForPortVessel,
+    ];
+
+    /// The rule broken, as text.
+    #[must_use]
+    pub fn description(self) -> &'static str {
+        match self {
+            ManeuverViolation::PortTurn => {
+                "turn to port in head-on or give-way crossing (rules 14, 15)"
+            }
+            ManeuverViolation::StarboardPassing => {
+                "passing starboard to starboard in head-on (rule 14)"
+            }
+            ManeuverViolation::CrossingAhead => "crossing ahead of the stand-on vessel (rule 15)",
+            ManeuverViolation::StandOnCourseChange => {
+                "stand-on vessel changed course (rule 17(a)(i))"
+            }
+            ManeuverViolation::StandOnSpeedChange => {
+                "stand-on vessel changed speed (rule 17(a)(i))"
+            }
+            ManeuverViolation::PortTurnForPortVessel => {
+                "stand-on vessel turned to port for a vessel on its port side (rule 17(c))"
+            }
+        }
+    }
+}
+
+impl std::fmt::Display for ManeuverViolation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.description())
+    }
+}
+
+/// Whether a stand-on vessel may act on its own: the give-way vessel is
+/// within [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m).
+#[must_use]
+pub fn stand_on_may_act(
+    own_position_m: DVec2,
+    target: &VesselState,
+    parameters: &RuleParameters,
+) -> bool {
+    own_position_m.distance(target.position_m) <= parameters.stand_on_action_range_m
+}
+
+/// Whether COLREGs allow ownship, at `own_position_m`, to take course
+/// `course_rad` at `speed_mps` while `latch` is in force against `target`.
+///
+/// ```
+/// use vorrt_colregs::{check_maneuver, EncounterLatch, Encounter, ManeuverViolation, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let target = VesselState::new(DVec2::new(0.0, 6000.0), std::f64::consts::PI, 6.0, 50.0);
+/// let latch = EncounterLatch::new(Encounter::HeadOn, &own, 0.0);
+/// let starboard = 30f64.to_radians();
+/// assert_eq!(check_maneuver(&latch, own.position_m, starboard, 6.0, &target, &params), Ok(()));
+/// assert_eq!(
+///     check_maneuver(&latch, own.position_m, -starboard, 6.0, &target, &params),
+///     Err(ManeuverViolation::PortTurn)
+/// );
+/// ```
+///
+/// # Errors
+/// The [`ManeuverViolation`] the candidate would commit.
+pub fn check_maneuver(
+    latch: &EncounterLatch,
+    own_position_m: DVec2,
+    course_rad: f64,
+    speed_mps: f64,
+    target: &VesselState,
+    parameters: &RuleParameters,
+) -> Result<(), ManeuverViolation> {
+    let turn = angle::signed_turn(latch.reference_course_rad, course_rad);
+    let turned_to_port = turn < -parameters.turn_tolerance_rad;
+    let own_velocity = angle::velocity(course_rad, speed_mps);
+    let target_velocity = target.velocity_mps();
+    match latch.encounter {
+        Encounter::HeadOn => {
+            if turned_to_port {
+                return Err(ManeuverViolation::PortTurn);
+            }
+            let closing =
+                (target.position_m - own_position_m).dot(own_velocity - target_velocity) > 0.0;
+            if closing
+                && passing_side(
+                    own_position_m,
+                    own_velocity,
+                    target.position_m,
+                    target_velocity,
+                ) == PassingSide::Starboard
+            {
+                return Err(ManeuverViolation::StarboardPassing);
+            }
+            Ok(())
+        }
+        Encounter::CrossingGiveWay => {
+            if turned_to_port {
+                return Err(ManeuverViolation::PortTurn);
+            }
+            if crosses_ahead(
+                own_position_m,
+                own_velocity,
+                target.position_m,
+                target_velocity,
+            ) {
+                return Err(ManeuverViolation::CrossingAhead);
+            }
+            Ok(())
+        }
+        Encounter::CrossingStandOn | Encounter::BeingOvertaken => {
+            if stand_on_may_act(own_position_m, target, parameters) {
+                let target_on_port =
+                    angle::relative_bearing(own_position_m, course_rad, target.position_m) >= PI;
+                if latch.encounter == Encounter::CrossingStandOn && turned_to_port && target_on_port
+                {
+                    return Err(ManeuverViolation::PortTurnForPortVessel);
+                }
+                return Ok(());
+            }
+            if turn.abs() > parameters.stand_on_course_tolerance_rad {
+                return Err(ManeuverViolation::StandOnCourseChange);
+            }
+            if (speed_mps - latch.reference_speed_mps).abs()
+                > parameters.stand_on_speed_tolerance_mps
+            {
+                return Err(ManeuverViolation::StandOnSpeedChange);
+            }
+            Ok(())
+        }
+        Encounter::Overtaking | Encounter::None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn state(x: f64, y: f64, course_deg: f64) -> VesselState {
+        VesselState::new(DVec2::new(x, y), course_deg.to_radians(), 6.0, 50.0)
+    }
+
+    #[test]
+    fn give_way_crossing_may_turn_starboard_but_not_cross_ahead() {
+        let params = RuleParameters::default();
+        let own = state(0.0, 0.0, 0.0);
+        let target = state(3000.0, 3000.0, 270.0);
+        let latch = EncounterLatch::new(Encounter::CrossingGiveWay, &own, 0.0);
+        assert_eq!(
+            check_maneuver(
+                &latch,
+                own.position_m,
+                60f64.to_radians(),
+                6.0,
+                &target,
+                &params
+            ),
+            Ok(())
+        );
+        assert_eq!(
+            check_maneuver(&latch, own.position_m, 0.0, 6.0, &target, &params),
+            Err(ManeuverViolation::CrossingAhead)
+        );
+        assert_eq!(
+            check_maneuver(&latch, own.position_m, -0.5, 6.0, &target, &params),
+            Err(ManeuverViolation::PortTurn)
+        );
+    }
+
+    #[test]
+    fn stand_on_keeps_course_until_action_range() {
+        let params = RuleParameters::default();
+        let own = state(0.0, 0.0, 0.0);
+        let far = state(-5000.0, 5000.0, 90.0);
+        let latch = EncounterLatch::new(Encounter::CrossingStandOn, &own, 0.0);
+        assert_eq!(
+            check_maneuver(
+                &latch,
+                own.position_m,
+                40f64.to_radians(),
+                6.0,
+                &far,
+                &params
+            ),
+            Err(ManeuverViolation::StandOnCourseChange)
+        );
+        assert_eq!(
+            check_maneuver(&latch, own.position_m, 0.0, 3.0, &far, &params),
+            Err(ManeuverViolation::StandOnSpeedChange)
+        );
+        let near = state(-1000.0, 1000.0, 90.0);
+        assert_eq!(
+            check_maneuver(
+                &latch,
+                own.position_m,
+                40f64.to_radians(),
+                6.0,
+                &near,
+                &params
+            ),
+            Ok(())
+        );
+        assert_eq!(
+            check_maneuver(
+                &latch,
+                own.position_m,
+                -40f64.to_radians(),
+                6.0,
+                &near,
+                &params
+            ),
+            Err(ManeuverViolation::PortTurnForPortVessel)
+        );
+    }
+
+    #[test]
+    fn overtaking_may_pass_either_side() {
+        let params = RuleParameters::default();
+        let own = state(0.0, 0.0, 0.0);
+        let ahead = VesselState::new(DVec2::new(0.0, 2000.0), 0.0, 3.0, 50.0);
+        let latch = EncounterLatch::new(Encounter::Overtaking, &own, 0.0);
+        for course in [-0.5, 0.5] {
+            assert_eq!(
+                check_maneuver(&latch, own.position_m, course, 6.0, &ahead, &params),
+                Ok(())
+            );
+        }
+        let _ = PI;
+    }
+}

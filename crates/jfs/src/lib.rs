@@ -1,0 +1,22 @@
+//! # vorrt-jfs
+//!
+//! Joint forward simulation (JFS) for the VORRT planner: how targets are
+//! predicted to move, and the joint step that moves ownship toward a sampled
+//! point while every target moves for the same time. Data in, data out; no I/O.
+//!
+//! ## Catalogue
+//!
+//! | module | what it gives |
+//! |---|---|
+//! | [`prediction`] | [`TargetState`]: constant course and speed, or steer for a goal and stop there; closed-form [`TargetState::predict`] |
+//! | [`joint_state`] | [`JointState`] (every vessel at one time), [`step_ownship`] and [`JointState::step_toward`]: the paper's JFS step |
+//! | [`error`] | [`JfsError`] |
+#![forbid(missing_docs)]
+
+pub mod error;
+pub mod joint_state;
+pub mod prediction;
+
+pub use error::JfsError;
+pub use joint_state::{JointState, OwnshipStep, step_ownship};
+pub use prediction::TargetState;

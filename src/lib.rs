@@ -1,0 +1,8 @@
+//! # vorrt
+//!
+//! The facade of the vorrt workspace: re-exports its crates.
+#![forbid(missing_docs)]
+
+pub use vorrt_colregs as colregs;
+pub use vorrt_geometry as geometry;
+pub use vorrt_jfs as jfs;
