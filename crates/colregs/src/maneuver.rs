@@ -165,8 +165,14 @@ pub fn check_maneuver(
         }
         Encounter::CrossingStandOn | Encounter::BeingOvertaken => {
             if stand_on_may_act(own_position_m, target, parameters) {
-                let target_on_port =
-                    angle::relative_bearing(own_position_m, course_rad, target.position_m) >= PI;
+                // The port side as seen on the course held (the reference),
+                // not on the candidate: a port turn can bring a port-side
+                // vessel onto the bow, which is what rule 17(c) forbids.
+                let target_on_port = angle::relative_bearing(
+                    own_position_m,
+                    latch.reference_course_rad,
+                    target.position_m,
+                ) >= PI;
                 if latch.encounter == Encounter::CrossingStandOn && turned_to_port && target_on_port
                 {
                     return Err(ManeuverViolation::PortTurnForPortVessel);
