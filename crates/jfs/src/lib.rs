@@ -8,7 +8,7 @@
 //!
 //! | module | what it gives |
 //! |---|---|
-//! | [`prediction`] | [`TargetState`]: constant course and speed, or steer for a goal and stop there; closed-form [`TargetState::predict`] |
+//! | [`prediction`] | [`TargetState`]: constant course and speed, or steer for a goal and stop there; closed-form [`TargetState::predict`] and [`LinearTrack`] |
 //! | [`joint_state`] | [`JointState`] (every vessel at one time), [`step_ownship`] and [`JointState::step_toward`]: the paper's JFS step |
 //! | [`error`] | [`JfsError`] |
 #![forbid(missing_docs)]
@@ -19,4 +19,4 @@ pub mod prediction;
 
 pub use error::JfsError;
 pub use joint_state::{JointState, OwnshipStep, step_ownship};
-pub use prediction::TargetState;
+pub use prediction::{LinearTrack, TargetState};

@@ -113,6 +113,98 @@ impl TargetState {
     }
 }
 
+/// A target's predicted motion in closed form: constant velocity from
+/// `start_m` for `moving_for_s` seconds (for ever without a goal), then at rest.
+/// The same motion as [`TargetState::predict`], precomputed so that a planner
+/// evaluates it with a multiply-add.
+///
+/// ```
+/// use vorrt_jfs::TargetState;
+/// use vorrt_colregs::VesselState;
+/// use glam::DVec2;
+/// let target = TargetState::toward_goal(
+///     VesselState::new(DVec2::ZERO, 0.0, 5.0, 50.0), DVec2::new(0.0, 1000.0));
+/// let track = target.track();
+/// assert_eq!(track.moving_for_s, 200.0);
+/// assert_eq!(track.position_at(100.0), target.predict(100.0).vessel.position_m);
+/// assert_eq!(track.velocity_at(300.0), DVec2::ZERO);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct LinearTrack {
+    /// Position at the track's time zero, metres.
+    pub start_m: DVec2,
+    /// Velocity while moving, m/s.
+    pub velocity_mps: DVec2,
+    /// How long it moves before it stops, seconds (`f64::INFINITY` without a goal).
+    pub moving_for_s: f64,
+    /// The vessel at time zero (course, speed and length).
+    pub vessel: VesselState,
+}
+
+impl LinearTrack {
+    /// Position `elapsed_s` after time zero (negative times are taken as zero).
+    #[inline]
+    #[must_use]
+    pub fn position_at(&self, elapsed_s: f64) -> DVec2 {
+        let moving_s = elapsed_s.clamp(0.0, self.moving_for_s);
+        self.start_m + self.velocity_mps * moving_s
+    }
+
+    /// Velocity `elapsed_s` after time zero: zero once it has stopped.
+    #[inline]
+    #[must_use]
+    pub fn velocity_at(&self, elapsed_s: f64) -> DVec2 {
+        if elapsed_s < self.moving_for_s {
+            self.velocity_mps
+        } else {
+            DVec2::ZERO
+        }
+    }
+
+    /// The full vessel state `elapsed_s` after time zero.
+    #[must_use]
+    pub fn state_at(&self, elapsed_s: f64) -> VesselState {
+        let moving = elapsed_s < self.moving_for_s;
+        VesselState {
+            position_m: self.position_at(elapsed_s),
+            speed_mps: if moving { self.vessel.speed_mps } else { 0.0 },
+            ..self.vessel
+        }
+    }
+}
+
+impl TargetState {
+    /// This target's motion as a [`LinearTrack`] starting now.
+    #[must_use]
+    pub fn track(&self) -> LinearTrack {
+        let mut vessel = self.vessel;
+        let moving_for_s = match self.goal_m {
+            None => f64::INFINITY,
+            Some(goal) => {
+                let to_goal = goal - vessel.position_m;
+                if to_goal != DVec2::ZERO {
+                    vessel.course_rad = angle::unit_to_course(to_goal);
+                }
+                match self.time_to_goal_s() {
+                    Some(time) => time,
+                    None => f64::INFINITY,
+                }
+            }
+        };
+        let velocity_mps = if moving_for_s > 0.0 {
+            vessel.velocity_mps()
+        } else {
+            DVec2::ZERO
+        };
+        LinearTrack {
+            start_m: vessel.position_m,
+            velocity_mps,
+            moving_for_s,
+            vessel,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

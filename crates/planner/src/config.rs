@@ -1,0 +1,236 @@
+//! Planner configuration, with the paper's values as defaults.
+
+use crate::error::PlannerError;
+use serde::{Deserialize, Serialize};
+use vorrt_colregs::RuleParameters;
+
+/// How the nearest tree node to a sample is found.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum NearestIndex {
+    /// A scan over the node positions, stored contiguously. Fastest for trees of
+    /// up to a few thousand nodes (see `docs/performance.md`).
+    #[default]
+    Linear,
+    /// An R*-tree (`rstar`), filled as nodes are accepted.
+    RTree,
+}
+
+/// Every knob of the VORRT planner.
+///
+/// Defaults are the paper's where it gives one (`d' = 100 m`, `d_th = 200 m`,
+/// 200 accepted nodes per phase) and documented choices where it does not
+/// (notes, errata 4, 5, 8 and 10).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PlannerConfig {
+    /// `d'`: how far ownship moves toward a sample in one joint forward step,
+    /// metres. Paper: 100 m.
+    pub step_m: f64,
+    /// `d_th`: the clearance every target must keep from ownship along every
+    /// segment and, while an encounter is in force, beyond it. Paper: 200 m in
+    /// open sea, 100 m in a traffic separation scheme.
+    pub clearance_m: f64,
+    /// A node this close to the goal tries a final segment onto it, metres.
+    /// Default: `step_m`.
+    pub goal_tolerance_m: f64,
+    /// Probability of sampling the goal in phase 1 (erratum 5). The paper
+    /// samples the goal every time (1.0), which repeats a rejected extension;
+    /// 0.5 keeps the bias and lets the tree explore.
+    pub goal_bias: f64,
+    /// Probability of sampling the goal in phase 2. The paper's phase 2 is
+    /// unbiased (0.0), the default.
+    pub phase_two_goal_bias: f64,
+    /// Accepted nodes per phase (paper: 200).
+    pub nodes_per_phase: usize,
+    /// Samples (accepted or not) per phase before the phase gives up (erratum 4).
+    pub samples_per_phase: usize,
+    /// How many times the whole tree is grown again from the root after both
+    /// phases fail.
+    pub max_restarts: usize,
+    /// Largest course change at one node, radians: a sample that asks for more
+    /// is steered toward within this limit (erratum 10: a turn-rate bound).
+    pub max_turn_per_step_rad: f64,
+    /// Margin around the start-goal box in which random samples fall, metres.
+    pub sampling_margin_m: f64,
+    /// Longest look beyond a segment for encounters in force, seconds: the
+    /// CPA of the new velocity is checked over this time (cut short where
+    /// ownship would reach its goal).
+    pub lookahead_s: f64,
+    /// Wall-clock budget for one plan, seconds; `None` for no limit. When it
+    /// runs out the planner returns [`PlannerError::BudgetExhausted`].
+    pub time_budget_s: Option<f64>,
+    /// Nearest-node search.
+    pub nearest_index: NearestIndex,
+    /// The COLREGs constants: MTD, sectors, stand-on tolerances.
+    pub rules: RuleParameters,
+}
+
+impl Default for PlannerConfig {
+    fn default() -> Self {
+        Self {
+            step_m: 100.0,
+            clearance_m: 200.0,
+            goal_tolerance_m: 100.0,
+            goal_bias: 0.5,
+            phase_two_goal_bias: 0.0,
+            nodes_per_phase: 200,
+            samples_per_phase: 4000,
+            max_restarts: 3,
+            max_turn_per_step_rad: 45f64.to_radians(),
+            sampling_margin_m: 2.0 * 1852.0,
+            lookahead_s: 1800.0,
+            time_budget_s: None,
+            nearest_index: NearestIndex::Linear,
+            rules: RuleParameters::default(),
+        }
+    }
+}
+
+/// The largest tree the planner will grow, whatever the configuration says:
+/// bounds memory (about 100 bytes a node plus 40 bytes a node per target).
+pub const MAX_NODES_PER_PHASE: usize = 100_000;
+
+/// The most samples per phase the planner accepts as configuration.
+pub const MAX_SAMPLES_PER_PHASE: usize = 10_000_000;
+
+/// The most restarts the planner accepts as configuration.
+pub const MAX_RESTARTS: usize = 1_000;
+
+impl PlannerConfig {
+    /// Checks every field.
+    ///
+    /// # Errors
+    /// [`PlannerError::InvalidConfig`] naming the first field out of range.
+    pub fn validate(&self) -> Result<(), PlannerError> {
+        let invalid = |field: &'static str, value: f64, expected: &'static str| {
+            Err(PlannerError::InvalidConfig {
+                field,
+                value,
+                expected,
+            })
+        };
+        let positive = [
+            ("step_m", self.step_m),
+            ("clearance_m", self.clearance_m),
+            ("goal_tolerance_m", self.goal_tolerance_m),
+            ("lookahead_s", self.lookahead_s),
+        ];
+        for (field, value) in positive {
+            if !(value.is_finite() && value > 0.0) {
+                return invalid(field, value, "a finite number greater than 0");
+            }
+        }
+        if !(self.sampling_margin_m.is_finite() && self.sampling_margin_m >= 0.0) {
+            return invalid(
+                "sampling_margin_m",
+                self.sampling_margin_m,
+                "a finite number of at least 0",
+            );
+        }
+        for (field, value) in [
+            ("goal_bias", self.goal_bias),
+            ("phase_two_goal_bias", self.phase_two_goal_bias),
+        ] {
+            if !(0.0..=1.0).contains(&value) {
+                return invalid(field, value, "a probability in [0, 1]");
+            }
+        }
+        if !(self.max_turn_per_step_rad > 0.0 && self.max_turn_per_step_rad <= std::f64::consts::PI)
+        {
+            return invalid(
+                "max_turn_per_step_rad",
+                self.max_turn_per_step_rad,
+                "an angle in (0, π]",
+            );
+        }
+        if self.nodes_per_phase == 0 || self.nodes_per_phase > MAX_NODES_PER_PHASE {
+            return invalid(
+                "nodes_per_phase",
+                self.nodes_per_phase as f64,
+                "a whole number from 1 to 100000",
+            );
+        }
+        if self.samples_per_phase < self.nodes_per_phase
+            || self.samples_per_phase > MAX_SAMPLES_PER_PHASE
+        {
+            return invalid(
+                "samples_per_phase",
+                self.samples_per_phase as f64,
+                "a whole number from nodes_per_phase to 10000000",
+            );
+        }
+        if self.max_restarts > MAX_RESTARTS {
+            return invalid(
+                "max_restarts",
+                self.max_restarts as f64,
+                "a whole number from 0 to 1000",
+            );
+        }
+        if let Some(budget) = self.time_budget_s {
+            if !(budget.is_finite() && budget > 0.0) {
+                return invalid(
+                    "time_budget_s",
+                    budget,
+                    "a finite number of seconds greater than 0",
+                );
+            }
+        }
+        self.rules.validate().map_err(PlannerError::from)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid() {
+        PlannerConfig::default().validate().expect("defaults");
+    }
+
+    #[test]
+    fn each_bad_field_is_named() {
+        let cases: [(PlannerConfig, &str); 5] = [
+            (
+                PlannerConfig {
+                    step_m: 0.0,
+                    ..PlannerConfig::default()
+                },
+                "step_m",
+            ),
+            (
+                PlannerConfig {
+                    clearance_m: f64::NAN,
+                    ..PlannerConfig::default()
+                },
+                "clearance_m",
+            ),
+            (
+                PlannerConfig {
+                    goal_bias: 1.5,
+                    ..PlannerConfig::default()
+                },
+                "goal_bias",
+            ),
+            (
+                PlannerConfig {
+                    nodes_per_phase: 0,
+                    ..PlannerConfig::default()
+                },
+                "nodes_per_phase",
+            ),
+            (
+                PlannerConfig {
+                    time_budget_s: Some(-1.0),
+                    ..PlannerConfig::default()
+                },
+                "time_budget_s",
+            ),
+        ];
+        for (config, field) in cases {
+            let message = config.validate().expect_err(field).to_string();
+            assert!(message.contains(field), "{message}");
+        }
+    }
+}

@@ -1,0 +1,257 @@
+//! What the planner returns: waypoints with times, the predicted targets along
+//! them, and statistics of the search.
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+use vorrt_colregs::{EncounterLatch, ManeuverViolation, VesselState};
+
+/// One point of the planned path.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Waypoint {
+    /// Where ownship is, metres.
+    pub position_m: DVec2,
+    /// When ownship is there, seconds (same clock as the problem's start time).
+    pub time_s: f64,
+    /// Ownship's course on the segment that ends here, radians (the start
+    /// course at the first waypoint).
+    pub course_rad: f64,
+}
+
+/// Why a sample was not added to the tree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RejectionCause {
+    /// The new velocity lies in a target's velocity obstacle (paper, Algorithm 3).
+    VelocityObstacle,
+    /// A target comes within `d_th` during the segment (erratum 6).
+    Clearance,
+    /// A target in an encounter in force would come within `d_th` after the
+    /// segment if ownship held the new velocity.
+    ClearanceAhead,
+    /// The move breaks a COLREGs rule for an encounter in force.
+    Colregs(ManeuverViolation),
+}
+
+impl RejectionCause {
+    /// A short description, for messages.
+    #[must_use]
+    pub fn description(self) -> String {
+        match self {
+            RejectionCause::VelocityObstacle => {
+                "velocity obstacle of a target (paper Algorithm 3)".into()
+            }
+            RejectionCause::Clearance => "clearance d_th broken during the segment".into(),
+            RejectionCause::ClearanceAhead => {
+                "clearance d_th broken after the segment (encounter in force)".into()
+            }
+            RejectionCause::Colregs(violation) => format!("COLREGs: {violation}"),
+        }
+    }
+}
+
+/// Rejected samples, counted by cause.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RejectionCounts {
+    /// Rejected by a velocity obstacle.
+    pub velocity_obstacle: u64,
+    /// Rejected for breaking `d_th` during the segment.
+    pub clearance: u64,
+    /// Rejected for breaking `d_th` after the segment.
+    pub clearance_ahead: u64,
+    /// Rejected for a turn to port (rules 14, 15).
+    pub port_turn: u64,
+    /// Rejected for passing starboard to starboard in head-on (rule 14).
+    pub starboard_passing: u64,
+    /// Rejected for crossing ahead of a stand-on vessel (rule 15).
+    pub crossing_ahead: u64,
+    /// Rejected for a stand-on course change (rule 17(a)(i)).
+    pub stand_on_course_change: u64,
+    /// Rejected for a stand-on speed change (rule 17(a)(i)).
+    pub stand_on_speed_change: u64,
+    /// Rejected for a port turn for a vessel on the port side (rule 17(c)).
+    pub port_turn_for_port_vessel: u64,
+}
+
+impl RejectionCounts {
+    /// Counts one rejection.
+    pub fn record(&mut self, cause: RejectionCause) {
+        *self.slot(cause) += 1;
+    }
+
+    fn slot(&mut self, cause: RejectionCause) -> &mut u64 {
+        match cause {
+            RejectionCause::VelocityObstacle => &mut self.velocity_obstacle,
+            RejectionCause::Clearance => &mut self.clearance,
+            RejectionCause::ClearanceAhead => &mut self.clearance_ahead,
+            RejectionCause::Colregs(ManeuverViolation::PortTurn) => &mut self.port_turn,
+            RejectionCause::Colregs(ManeuverViolation::StarboardPassing) => {
+                &mut self.starboard_passing
+            }
+            RejectionCause::Colregs(ManeuverViolation::CrossingAhead) => &mut self.crossing_ahead,
+            RejectionCause::Colregs(ManeuverViolation::StandOnCourseChange) => {
+                &mut self.stand_on_course_change
+            }
+            RejectionCause::Colregs(ManeuverViolation::StandOnSpeedChange) => {
+                &mut self.stand_on_speed_change
+            }
+            RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel) => {
+                &mut self.port_turn_for_port_vessel
+            }
+        }
+    }
+
+    /// Every cause with its count, in a fixed order.
+    #[must_use]
+    pub fn by_cause(&self) -> [(RejectionCause, u64); 9] {
+        [
+            (RejectionCause::VelocityObstacle, self.velocity_obstacle),
+            (RejectionCause::Clearance, self.clearance),
+            (RejectionCause::ClearanceAhead, self.clearance_ahead),
+            (
+                RejectionCause::Colregs(ManeuverViolation::PortTurn),
+                self.port_turn,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::StarboardPassing),
+                self.starboard_passing,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::CrossingAhead),
+                self.crossing_ahead,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::StandOnCourseChange),
+                self.stand_on_course_change,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::StandOnSpeedChange),
+                self.stand_on_speed_change,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel),
+                self.port_turn_for_port_vessel,
+            ),
+        ]
+    }
+
+    /// All rejections.
+    #[must_use]
+    pub fn total(&self) -> u64 {
+        self.by_cause().iter().map(|(_, count)| count).sum()
+    }
+
+    /// The cause that rejected most samples, if any sample was rejected.
+    #[must_use]
+    pub fn dominant_cause(&self) -> Option<RejectionCause> {
+        self.by_cause()
+            .into_iter()
+            .filter(|(_, count)| *count > 0)
+            .max_by_key(|(_, count)| *count)
+            .map(|(cause, _)| cause)
+    }
+
+    /// The dominant cause as text ("nothing" when no sample was rejected).
+    #[must_use]
+    pub fn dominant_cause_text(&self) -> String {
+        match self.dominant_cause() {
+            Some(cause) => {
+                let count = self
+                    .by_cause()
+                    .into_iter()
+                    .find(|(c, _)| *c == cause)
+                    .map_or(0, |(_, n)| n);
+                format!("{} ({count} of {})", cause.description(), self.total())
+            }
+            None => "nothing (no sample was rejected; the node or sample budget ran out)".into(),
+        }
+    }
+}
+
+/// What the search did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct PlanStatistics {
+    /// Nodes in the tree that produced the plan (or in all trees, on failure).
+    pub nodes: u64,
+    /// Samples drawn, accepted or not, over all restarts.
+    pub samples: u64,
+    /// Rejected samples by cause, over all restarts.
+    pub rejections: RejectionCounts,
+    /// Times the tree was grown again from the root.
+    pub restarts: u64,
+    /// Wall-clock time spent, seconds (not part of the deterministic output).
+    pub elapsed_s: f64,
+}
+
+/// A safe path from ownship's position to its goal.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Plan {
+    /// From the start (first) to the goal (last).
+    pub waypoints: Vec<Waypoint>,
+    /// The predicted state of every target at each waypoint's time:
+    /// `target_states[waypoint][target]`.
+    pub target_states: Vec<Vec<VesselState>>,
+    /// The encounters in force at each waypoint: `encounters[waypoint][target]`.
+    pub encounters: Vec<Vec<Option<EncounterLatch>>>,
+    /// Statistics of the search.
+    pub statistics: PlanStatistics,
+}
+
+impl Plan {
+    /// Path length, metres.
+    #[must_use]
+    pub fn length_m(&self) -> f64 {
+        self.waypoints
+            .windows(2)
+            .map(|pair| pair[0].position_m.distance(pair[1].position_m))
+            .sum()
+    }
+
+    /// Time from the first to the last waypoint, seconds.
+    #[must_use]
+    pub fn duration_s(&self) -> f64 {
+        match (self.waypoints.first(), self.waypoints.last()) {
+            (Some(first), Some(last)) => last.time_s - first.time_s,
+            _ => 0.0,
+        }
+    }
+
+    /// Ownship's planned position and course at `time_s` (clamped to the plan's span).
+    #[must_use]
+    pub fn position_at(&self, time_s: f64) -> Option<(DVec2, f64)> {
+        let first = self.waypoints.first()?;
+        if time_s <= first.time_s || self.waypoints.len() == 1 {
+            let course = self
+                .waypoints
+                .get(1)
+                .map_or(first.course_rad, |next| next.course_rad);
+            return Some((first.position_m, course));
+        }
+        let index = self
+            .waypoints
+            .partition_point(|waypoint| waypoint.time_s < time_s);
+        let Some(next) = self.waypoints.get(index) else {
+            let last = self.waypoints.last()?;
+            return Some((last.position_m, last.course_rad));
+        };
+        let previous = self.waypoints[index - 1];
+        let span = next.time_s - previous.time_s;
+        let fraction = if span > 0.0 {
+            (time_s - previous.time_s) / span
+        } else {
+            1.0
+        };
+        Some((
+            previous.position_m.lerp(next.position_m, fraction),
+            next.course_rad,
+        ))
+    }
+
+    /// For each target, the first encounter the plan expects to have with it.
+    #[must_use]
+    pub fn anticipated_encounters(&self) -> Vec<Option<EncounterLatch>> {
+        let targets = self.encounters.first().map_or(0, Vec::len);
+        (0..targets)
+            .map(|target| self.encounters.iter().find_map(|row| row[target]))
+            .collect()
+    }
+}

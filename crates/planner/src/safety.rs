@@ -1,0 +1,201 @@
+//! The checks a move must pass to join the tree (paper, Algorithm 3, with
+//! errata 2, 3 and 6 applied).
+//!
+//! For a move from a parent node along a new velocity, in this order:
+//! 1. **velocity obstacle** — for every target within MTD, the new velocity
+//!    must lie outside `VO_B^A(V_B)` with disc radii equal to the lengths
+//!    (erratum 7);
+//! 2. **clearance** — every target stays at least `d_th` away during the
+//!    segment (CPA restricted to the segment's time, erratum 6), with the
+//!    target's predicted motion (it may stop at its goal mid-segment);
+//! 3. **clearance ahead** — for every target within MTD, `d_th` also holds
+//!    if ownship kept the new velocity after the segment, for up to
+//!    `lookahead_s` or until it would reach its goal;
+//! 4. **COLREGs** — for every encounter in force, `vorrt_colregs::check_maneuver`.
+//!
+//! A stand-on vessel whose give-way vessel is still beyond the stand-on action
+//! range keeps its course (rule 17(a)(i)), so for that target checks 1 and 3
+//! are waived: the give-way vessel is expected to act. Check 2 always holds.
+
+use crate::config::PlannerConfig;
+use crate::plan::RejectionCause;
+use glam::DVec2;
+use vorrt_colregs::{EncounterLatch, Role, check_maneuver, stand_on_may_act};
+use vorrt_geometry::VelocityObstacle;
+use vorrt_geometry::cpa::cpa_clamped;
+use vorrt_jfs::LinearTrack;
+
+/// The smallest distance between ownship, leaving `start_m` with
+/// `velocity_mps`, and a target on `track`, over `duration_s` seconds starting
+/// `track_elapsed_s` after the track's time zero. The target may stop part way.
+#[must_use]
+pub fn min_distance_over(
+    start_m: DVec2,
+    velocity_mps: DVec2,
+    track: &LinearTrack,
+    track_elapsed_s: f64,
+    duration_s: f64,
+) -> f64 {
+    let moving_s = (track.moving_for_s - track_elapsed_s).clamp(0.0, duration_s);
+    let target_start = track.position_at(track_elapsed_s);
+    let mut best = f64::INFINITY;
+    if moving_s > 0.0 {
+        let cpa = cpa_clamped(
+            start_m - target_start,
+            velocity_mps - track.velocity_mps,
+            moving_s,
+        );
+        best = cpa.distance_m;
+    }
+    if moving_s < duration_s {
+        // The target is at rest for the rest of the interval.
+        let own_then = start_m + velocity_mps * moving_s;
+        let target_then = track.position_at(track_elapsed_s + moving_s);
+        let cpa = cpa_clamped(own_then - target_then, velocity_mps, duration_s - moving_s);
+        best = best.min(cpa.distance_m);
+    }
+    best
+}
+
+/// One candidate move out of a parent node.
+#[derive(Debug, Clone, Copy)]
+pub struct Move {
+    /// Ownship's position at the parent, metres.
+    pub start_m: DVec2,
+    /// Seconds from the plan's start to the parent's time.
+    pub start_elapsed_s: f64,
+    /// Course of the move, radians.
+    pub course_rad: f64,
+    /// Ownship's velocity along the move, m/s.
+    pub velocity_mps: DVec2,
+    /// Duration of the move, seconds.
+    pub duration_s: f64,
+}
+
+/// Checks moves against the targets of one problem.
+#[derive(Debug)]
+pub struct SafetyChecker<'a> {
+    /// The planner's settings.
+    pub config: &'a PlannerConfig,
+    /// Each target's predicted motion from the plan's start.
+    pub tracks: &'a [LinearTrack],
+    /// Ownship's length, metres.
+    pub own_length_m: f64,
+    /// Ownship's speed, m/s.
+    pub own_speed_mps: f64,
+    /// Where ownship is bound.
+    pub goal_m: DVec2,
+}
+
+impl SafetyChecker<'_> {
+    /// Checks one move given the encounters in force at its parent.
+    ///
+    /// # Errors
+    /// The first [`RejectionCause`] the move runs into.
+    pub fn check(
+        &self,
+        candidate: &Move,
+        latches: &[Option<EncounterLatch>],
+    ) -> Result<(), RejectionCause> {
+        let rules = &self.config.rules;
+        let clearance = self.config.clearance_m;
+        let end_m = candidate.start_m + candidate.velocity_mps * candidate.duration_s;
+        let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
+        let to_goal_s = end_m.distance(self.goal_m) / self.own_speed_mps;
+        let lookahead_s = self.config.lookahead_s.min(to_goal_s);
+        for (index, track) in self.tracks.iter().enumerate() {
+            let target_position = track.position_at(candidate.start_elapsed_s);
+            let range = candidate.start_m.distance(target_position);
+            let latch = latches.get(index).copied().flatten();
+            let waived = latch.is_some_and(|latch| {
+                latch.encounter.role() == Role::StandOn
+                    && !stand_on_may_act(
+                        candidate.start_m,
+                        &track.state_at(candidate.start_elapsed_s),
+                        rules,
+                    )
+            });
+            let near = range < rules.mtd_m && !waived;
+            if near {
+                let obstacle = VelocityObstacle::new(
+                    candidate.start_m,
+                    target_position,
+                    track.velocity_at(candidate.start_elapsed_s),
+                    self.own_length_m + track.vessel.length_m,
+                );
+                if obstacle.contains(candidate.velocity_mps) {
+                    return Err(RejectionCause::VelocityObstacle);
+                }
+            }
+            let during = min_distance_over(
+                candidate.start_m,
+                candidate.velocity_mps,
+                track,
+                candidate.start_elapsed_s,
+                candidate.duration_s,
+            );
+            if during < clearance {
+                return Err(RejectionCause::Clearance);
+            }
+            if near && lookahead_s > 0.0 {
+                let ahead = min_distance_over(
+                    end_m,
+                    candidate.velocity_mps,
+                    track,
+                    end_elapsed_s,
+                    lookahead_s,
+                );
+                if ahead < clearance {
+                    return Err(RejectionCause::ClearanceAhead);
+                }
+            }
+            if let Some(latch) = latch {
+                check_maneuver(
+                    &latch,
+                    candidate.start_m,
+                    candidate.course_rad,
+                    self.own_speed_mps,
+                    &track.state_at(candidate.start_elapsed_s),
+                    rules,
+                )
+                .map_err(RejectionCause::Colregs)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vorrt_colregs::VesselState;
+    use vorrt_jfs::TargetState;
+
+    #[test]
+    fn stopping_target_is_split_into_two_pieces() {
+        // Target moves east from x = 0 to x = 100 at 10 m/s, then waits there.
+        let track = TargetState::toward_goal(
+            VesselState::new(DVec2::ZERO, 0.0, 10.0, 10.0),
+            DVec2::new(100.0, 0.0),
+        )
+        .track();
+        // Ownship passes over x = 150 going south, from y = 100, at 10 m/s: it is
+        // nearest the stopped target at t = 10 s, 50 m away.
+        let distance = min_distance_over(
+            DVec2::new(100.0, 100.0),
+            DVec2::new(0.0, -10.0),
+            &track,
+            0.0,
+            20.0,
+        );
+        assert!((distance - 0.0).abs() < 1e-9, "{distance}");
+        let distance = min_distance_over(
+            DVec2::new(150.0, 100.0),
+            DVec2::new(0.0, -10.0),
+            &track,
+            0.0,
+            20.0,
+        );
+        assert!((distance - 50.0).abs() < 1e-9, "{distance}");
+    }
+}
