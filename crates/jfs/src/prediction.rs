@@ -185,10 +185,7 @@ impl TargetState {
                 if to_goal != DVec2::ZERO {
                     vessel.course_rad = angle::unit_to_course(to_goal);
                 }
-                match self.time_to_goal_s() {
-                    Some(time) => time,
-                    None => f64::INFINITY,
-                }
+                self.time_to_goal_s().unwrap_or(f64::INFINITY)
             }
         };
         let velocity_mps = if moving_for_s > 0.0 {
