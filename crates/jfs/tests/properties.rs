@@ -129,6 +129,23 @@ proptest! {
         }
     }
 
+    /// The planner's linear track of a target is the same motion as its
+    /// closed-form prediction: same position, and zero velocity once stopped.
+    #[test]
+    fn linear_track_follows_prediction(target in target(), elapsed_s in duration()) {
+        let track = target.track();
+        let predicted = target.predict(elapsed_s);
+        prop_assert!(near(track.position_at(elapsed_s), predicted.vessel.position_m),
+            "{:?} vs {:?}", track.position_at(elapsed_s), predicted.vessel.position_m);
+        if predicted.vessel.speed_mps == 0.0 {
+            prop_assert!(track.position_at(elapsed_s + 100.0).distance(predicted.vessel.position_m) <= 1e-6);
+        } else {
+            prop_assert!(
+                (track.velocity_at(elapsed_s) - predicted.vessel.velocity_mps()).length() <= 1e-9
+            );
+        }
+    }
+
     /// The JFS step (Algorithm 2, line 5): ownship moves exactly d' toward the
     /// sample, or onto it when it is nearer, on the course toward it, in
     /// distance / speed seconds.
