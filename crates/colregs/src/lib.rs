@@ -14,6 +14,7 @@
 //! | [`encounter`] | [`classify`]: head-on, crossing give-way / stand-on, overtaking, being overtaken, none (rules 13-15); [`Role`] |
 //! | [`latch`] | [`EncounterLatch`], [`update_latch`], [`has_passed`]: keep an encounter's type until the vessels have passed |
 //! | [`passing`] | [`passing_side`], [`crosses_ahead`]: how ownship passes a target |
+//! | [`compliance`] | [`assess_encounter`]: post-hoc scoring of one recorded encounter (safety, rules 13-17), [`ScoringParameters`] |
 //! | [`maneuver`] | [`check_maneuver`]: whether a candidate velocity obeys rules 14-17 in an encounter in force |
 //! | [`error`] | [`ColregsError`] |
 //!
@@ -35,6 +36,7 @@
 //! ```
 #![forbid(missing_docs)]
 
+pub mod compliance;
 pub mod encounter;
 pub mod error;
 pub mod latch;
@@ -44,6 +46,10 @@ pub mod passing;
 pub mod risk;
 pub mod vessel;
 
+pub use compliance::{
+    ComplianceViolation, EncounterAssessment, EncounterSample, PenaltyWeights, RuleScores,
+    ScoringParameters, assess_encounter, first_latch, safety_score,
+};
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
 pub use latch::{EncounterLatch, has_passed, update_latch};
