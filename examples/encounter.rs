@@ -46,16 +46,7 @@ fn main() {
     );
     println!();
     println!(
-        "{:<13} {:>10} {:>9} {:>9} {:>11} {:>10} {:>5}  {:<18} {}",
-        "target",
-        "range(nm)",
-        "brg(deg)",
-        "rev(deg)",
-        "t_cpa(min)",
-        "d_cpa(nm)",
-        "risk",
-        "encounter",
-        "role"
+        "target         range(nm)  brg(deg)  rev(deg)  t_cpa(min)  d_cpa(nm)  risk  encounter          role"
     );
     for (name, target) in &targets {
         let risk = assess_risk(&ownship, target, &parameters);

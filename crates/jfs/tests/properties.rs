@@ -99,11 +99,11 @@ proptest! {
         prop_assert!(
             later.vessel.position_m.distance(goal) <= earlier.vessel.position_m.distance(goal) + scale
         );
-        if let Some(arrival_s) = target.time_to_goal_s() {
-            if first_s + extra_s >= arrival_s {
-                prop_assert_eq!(later.vessel.position_m, goal);
-                prop_assert_eq!(later.vessel.speed_mps, 0.0);
-            }
+        if let Some(arrival_s) = target.time_to_goal_s()
+            && first_s + extra_s >= arrival_s
+        {
+            prop_assert_eq!(later.vessel.position_m, goal);
+            prop_assert_eq!(later.vessel.speed_mps, 0.0);
         }
     }
 
