@@ -41,7 +41,10 @@ impl EncounterLatch {
 /// [`passed_angle_rad`](RuleParameters::passed_angle_rad) away from the line of
 /// sight — both of them in head-on and crossing, either of them in the
 /// overtaking encounters (the overtaken vessel keeps pointing at the other).
-/// A range opening beyond MTD also ends the encounter.
+/// A range that opens while already wider than
+/// [`risk_cpa_m`](RuleParameters::risk_cpa_m) also ends it: the CPA is now
+/// and it is no risk (vessels running side by side would otherwise stay
+/// latched for ever).
 #[must_use]
 pub fn has_passed(
     own: &VesselState,
@@ -55,7 +58,7 @@ pub fn has_passed(
     if !opening {
         return false;
     }
-    if line_of_sight.length() > parameters.mtd_m {
+    if line_of_sight.length() > parameters.risk_cpa_m {
         return true;
     }
     let points_away = |velocity: glam::DVec2, towards: glam::DVec2| {

@@ -53,7 +53,7 @@ pub use compliance::{
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
 pub use latch::{EncounterLatch, has_passed, update_latch};
-pub use maneuver::{ManeuverViolation, check_maneuver, stand_on_may_act};
+pub use maneuver::{ManeuverViolation, check_maneuver, check_maneuver_acting, stand_on_may_act};
 pub use parameters::RuleParameters;
 pub use passing::{PassingSide, crosses_ahead, passing_side};
 pub use risk::{RiskAssessment, assess_risk};

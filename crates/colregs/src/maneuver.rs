@@ -126,6 +126,35 @@ pub fn check_maneuver(
     target: &VesselState,
     parameters: &RuleParameters,
 ) -> Result<(), ManeuverViolation> {
+    let may_act = stand_on_may_act(own_position_m, target, parameters);
+    check_maneuver_acting(
+        latch,
+        own_position_m,
+        course_rad,
+        speed_mps,
+        target,
+        parameters,
+        may_act,
+    )
+}
+
+/// As [`check_maneuver`], with the caller deciding whether a stand-on vessel
+/// may act (`stand_on_acting`): with several targets, a vessel that must give
+/// way to one of them cannot also keep course for another (rule 17 yields to
+/// the duty to keep out of the way), though it still may not turn to port for
+/// a vessel on its port side (rule 17(c)).
+///
+/// # Errors
+/// The [`ManeuverViolation`] the candidate would commit.
+pub fn check_maneuver_acting(
+    latch: &EncounterLatch,
+    own_position_m: DVec2,
+    course_rad: f64,
+    speed_mps: f64,
+    target: &VesselState,
+    parameters: &RuleParameters,
+    stand_on_acting: bool,
+) -> Result<(), ManeuverViolation> {
     let turn = angle::signed_turn(latch.reference_course_rad, course_rad);
     let turned_to_port = turn < -parameters.turn_tolerance_rad;
     let own_velocity = angle::velocity(course_rad, speed_mps);
@@ -164,7 +193,7 @@ pub fn check_maneuver(
             Ok(())
         }
         Encounter::CrossingStandOn | Encounter::BeingOvertaken => {
-            if stand_on_may_act(own_position_m, target, parameters) {
+            if stand_on_acting {
                 // The port side as seen on the course held (the reference),
                 // not on the candidate: a port turn can bring a port-side
                 // vessel onto the bow, which is what rule 17(c) forbids.

@@ -167,14 +167,14 @@ impl PlannerConfig {
                 "a whole number from 0 to 1000",
             );
         }
-        if let Some(budget) = self.time_budget_s {
-            if !(budget.is_finite() && budget > 0.0) {
-                return invalid(
-                    "time_budget_s",
-                    budget,
-                    "a finite number of seconds greater than 0",
-                );
-            }
+        if let Some(budget) = self.time_budget_s
+            && !(budget.is_finite() && budget > 0.0)
+        {
+            return invalid(
+                "time_budget_s",
+                budget,
+                "a finite number of seconds greater than 0",
+            );
         }
         self.rules.validate().map_err(PlannerError::from)
     }

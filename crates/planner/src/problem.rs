@@ -54,7 +54,7 @@ impl PlanningProblem {
             return bad("start_time_s".into(), "is not finite");
         }
         check_vessel("ownship", &self.ownship)?;
-        if !(self.ownship.speed_mps > 0.0) {
+        if self.ownship.speed_mps <= 0.0 {
             return bad(
                 "ownship.speed_mps".into(),
                 "must be greater than 0 for ownship to move",

@@ -16,11 +16,14 @@
 //! A stand-on vessel whose give-way vessel is still beyond the stand-on action
 //! range keeps its course (rule 17(a)(i)), so for that target checks 1 and 3
 //! are waived: the give-way vessel is expected to act. Check 2 always holds.
+//! When ownship must give way to any target, it is acting, and so it also
+//! keeps clear of the vessels it would otherwise stand on for (checks 1 and 3
+//! apply to them; rule 17(c) still forbids a port turn for a port-side vessel).
 
 use crate::config::PlannerConfig;
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::{EncounterLatch, Role, check_maneuver, stand_on_may_act};
+use vorrt_colregs::{EncounterLatch, Role, check_maneuver_acting, stand_on_may_act};
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
 use vorrt_jfs::LinearTrack;
@@ -103,18 +106,18 @@ impl SafetyChecker<'_> {
         let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
         let to_goal_s = end_m.distance(self.goal_m) / self.own_speed_mps;
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
+        let giving_way = latches
+            .iter()
+            .flatten()
+            .any(|latch| latch.encounter.role() == Role::GiveWay);
         for (index, track) in self.tracks.iter().enumerate() {
             let target_position = track.position_at(candidate.start_elapsed_s);
             let range = candidate.start_m.distance(target_position);
             let latch = latches.get(index).copied().flatten();
-            let waived = latch.is_some_and(|latch| {
-                latch.encounter.role() == Role::StandOn
-                    && !stand_on_may_act(
-                        candidate.start_m,
-                        &track.state_at(candidate.start_elapsed_s),
-                        rules,
-                    )
-            });
+            let target_now = track.state_at(candidate.start_elapsed_s);
+            let acting = giving_way || stand_on_may_act(candidate.start_m, &target_now, rules);
+            let waived =
+                latch.is_some_and(|latch| latch.encounter.role() == Role::StandOn && !acting);
             let near = range < rules.mtd_m && !waived;
             if near {
                 let obstacle = VelocityObstacle::new(
@@ -150,13 +153,14 @@ impl SafetyChecker<'_> {
                 }
             }
             if let Some(latch) = latch {
-                check_maneuver(
+                check_maneuver_acting(
                     &latch,
                     candidate.start_m,
                     candidate.course_rad,
                     self.own_speed_mps,
-                    &track.state_at(candidate.start_elapsed_s),
+                    &target_now,
                     rules,
+                    acting,
                 )
                 .map_err(RejectionCause::Colregs)?;
             }

@@ -189,7 +189,7 @@ impl Planner {
             samples += 1;
             statistics.samples += 1;
             if let Some(budget_s) = config.time_budget_s
-                && statistics.samples % CLOCK_EVERY_SAMPLES == 0
+                && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
                 && started.elapsed().as_secs_f64() > budget_s
             {
                 statistics.nodes = self.tree.len() as u64;
