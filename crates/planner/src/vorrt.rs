@@ -80,6 +80,12 @@ impl Planner {
         })
     }
 
+    /// The tree of the last plan (for inspection and tests).
+    #[must_use]
+    pub fn debug_tree(&self) -> &Tree {
+        &self.tree
+    }
+
     /// The configuration in use.
     #[must_use]
     pub fn config(&self) -> &PlannerConfig {
