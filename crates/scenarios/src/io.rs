@@ -1,0 +1,115 @@
+//! Reading and writing scenario files (RON).
+
+use crate::error::ScenarioError;
+use crate::scenario::Scenario;
+use ron::extensions::Extensions;
+use ron::ser::PrettyConfig;
+use std::path::{Path, PathBuf};
+
+/// The file extension of scenario files.
+pub const SCENARIO_EXTENSION: &str = "ron";
+
+/// Scenario files are read and written with the `implicit_some` extension:
+/// an optional field is written as its value, `goal_nm: (0.0, 3.0)`, not
+/// `goal_nm: Some((0.0, 3.0))` (both are accepted).
+fn options() -> ron::Options {
+    ron::Options::default().with_default_extension(Extensions::IMPLICIT_SOME)
+}
+
+impl Scenario {
+    /// Parses and validates a scenario. `source` names the text in error
+    /// messages (a file path, or e.g. `"<generated>"`) and is kept in
+    /// [`Scenario::source`].
+    ///
+    /// # Errors
+    /// [`ScenarioError::Syntax`] when the text is not a scenario (with the
+    /// line and column), [`ScenarioError::Invalid`] when a value breaks a rule.
+    pub fn from_ron_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
+        let mut scenario: Scenario =
+            options()
+                .from_str(text)
+                .map_err(|error: ron::error::SpannedError| ScenarioError::Syntax {
+                    file: source.to_owned(),
+                    line: error.position.line,
+                    column: error.position.col,
+                    message: error.code.to_string(),
+                })?;
+        scenario.source = source.to_owned();
+        scenario.validate()?;
+        Ok(scenario)
+    }
+
+    /// Reads, parses and validates the scenario file at `path`.
+    ///
+    /// # Errors
+    /// [`ScenarioError::Io`] when the file cannot be read, else as
+    /// [`Scenario::from_ron_str`].
+    pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
+        let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Io {
+            path: path.to_owned(),
+            source,
+        })?;
+        Self::from_ron_str(&text, &path.display().to_string())
+    }
+
+    /// The scenario as pretty-printed RON, in the format it was read from.
+    /// [`Scenario::from_ron_str`] on the result gives back an equal scenario.
+    /// Fields at their defaults are left out.
+    ///
+    /// # Errors
+    /// [`ScenarioError::Syntax`] if RON cannot represent a value (it can
+    /// represent every value a valid scenario holds).
+    pub fn to_ron_string(&self) -> Result<String, ScenarioError> {
+        let config = PrettyConfig::new()
+            .struct_names(true)
+            .indentor("    ".to_owned());
+        let mut text =
+            options()
+                .to_string_pretty(self, config)
+                .map_err(|error| ScenarioError::Syntax {
+                    file: self.source.clone(),
+                    line: 0,
+                    column: 0,
+                    message: format!("cannot write as RON: {error}"),
+                })?;
+        text.push('\n');
+        Ok(text)
+    }
+}
+
+/// Loads every `*.ron` file directly inside `dir` (not in subdirectories),
+/// sorted by file name.
+///
+/// # Errors
+/// [`ScenarioError::Io`] if the directory cannot be listed; otherwise the
+/// first file (in name order) that fails to load stops the loading and its
+/// error is returned.
+pub fn load_dir(dir: &Path) -> Result<Vec<(PathBuf, Scenario)>, ScenarioError> {
+    let io_error = |source| ScenarioError::Io {
+        path: dir.to_owned(),
+        source,
+    };
+    let mut paths = Vec::new();
+    for entry in std::fs::read_dir(dir).map_err(io_error)? {
+        let path = entry.map_err(io_error)?.path();
+        if path.is_file()
+            && path
+                .extension()
+                .is_some_and(|extension| extension == SCENARIO_EXTENSION)
+        {
+            paths.push(path);
+        }
+    }
+    paths.sort_by(|a, b| a.file_name().cmp(&b.file_name()));
+    paths
+        .into_iter()
+        .map(|path| Scenario::load(&path).map(|scenario| (path, scenario)))
+        .collect()
+}
+
+/// The bundled fixtures directory (`fixtures/` at the workspace root, holding
+/// `paper/` and `imazu/`), as found from this crate's source location.
+#[must_use]
+pub fn bundled_fixtures_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
+}

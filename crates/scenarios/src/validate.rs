@@ -1,0 +1,359 @@
+//! The rules a scenario must keep (run by every loader).
+
+use crate::error::ScenarioError;
+use crate::planner_settings::describe_config_error;
+use crate::scenario::{Lane, Scenario, VesselSpec};
+use vorrt_geometry::DVec2;
+use vorrt_planner::PlannerConfig;
+
+/// The most targets one scenario may hold.
+pub const MAX_TARGETS: usize = 256;
+/// Positions, goals and lane ends must lie within this distance of the origin,
+/// nautical miles: keeps every distance and time the planner computes finite.
+pub const MAX_EXTENT_NM: f64 = 10_000.0;
+/// The fastest vessel a scenario may hold, knots.
+pub const MAX_SPEED_KN: f64 = 100.0;
+/// The longest vessel a scenario may hold, metres.
+pub const MAX_LENGTH_M: f64 = 1_000.0;
+/// The most simulation steps (`max_duration_s / time_step_s`) a scenario may
+/// ask for.
+pub const MAX_SIMULATION_STEPS: f64 = 10_000_000.0;
+
+/// Which vessel of a scenario, for error messages.
+#[derive(Clone, Copy)]
+enum Who<'a> {
+    Ownship,
+    Target(usize, &'a str),
+}
+
+impl Who<'_> {
+    fn field(self, field: &str) -> String {
+        match self {
+            Who::Ownship => format!("ownship.{field}"),
+            Who::Target(index, name) => format!("targets[{index}] {name:?}.{field}"),
+        }
+    }
+}
+
+impl Scenario {
+    /// Checks every rule of the format (see `docs/scenario-format.md`,
+    /// "Validation") and normalises every course into `[0, 360)` degrees.
+    /// The loaders call this; call it after building or editing a scenario
+    /// in code. Errors name [`Scenario::source`] as the file.
+    ///
+    /// # Errors
+    /// [`ScenarioError::Invalid`] naming the first field that breaks a rule.
+    pub fn validate(&mut self) -> Result<(), ScenarioError> {
+        let file = self.source.clone();
+        let invalid = |field: String, problem: String| ScenarioError::Invalid {
+            file: file.clone(),
+            field,
+            problem,
+        };
+        if self.name.trim().is_empty() {
+            return Err(invalid("name".into(), "must not be empty".into()));
+        }
+        check_vessel(&mut self.ownship, Who::Ownship).map_err(|(f, p)| invalid(f, p))?;
+        if self.targets.len() > MAX_TARGETS {
+            return Err(invalid(
+                "targets".into(),
+                format!(
+                    "holds {} vessels, more than the {MAX_TARGETS} allowed",
+                    self.targets.len()
+                ),
+            ));
+        }
+        for (index, target) in self.targets.iter_mut().enumerate() {
+            let name = target.name.clone();
+            check_vessel(target, Who::Target(index, &name)).map_err(|(f, p)| invalid(f, p))?;
+        }
+        check_ownship(&self.ownship).map_err(|(f, p)| invalid(f, p))?;
+        self.check_names().map_err(|(f, p)| invalid(f, p))?;
+        let config = self
+            .checked_planner_config()
+            .map_err(|(f, p)| invalid(f, p))?;
+        self.check_clearance(&config)
+            .map_err(|(f, p)| invalid(f, p))?;
+        self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
+        for (index, lane) in self.lanes.iter().enumerate() {
+            check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
+        }
+        Ok(())
+    }
+
+    /// The planner configuration: [`PlannerConfig::default()`] with the
+    /// `planner` section's fields applied, converted to SI and validated.
+    ///
+    /// # Errors
+    /// [`ScenarioError::Invalid`] naming [`Scenario::source`] and the
+    /// `planner.<field>` at fault, with its value in the file's units.
+    pub fn planner_config(&self) -> Result<PlannerConfig, ScenarioError> {
+        self.checked_planner_config()
+            .map_err(|(field, problem)| ScenarioError::Invalid {
+                file: self.source.clone(),
+                field,
+                problem,
+            })
+    }
+
+    fn checked_planner_config(&self) -> Result<PlannerConfig, (String, String)> {
+        for (name, value) in self.planner.set_numbers() {
+            if !value.is_finite() {
+                return Err((
+                    format!("planner.{name}"),
+                    format!("is {value}, not a finite number"),
+                ));
+            }
+        }
+        let config = self.planner.apply_to(PlannerConfig::default());
+        config
+            .validate()
+            .map_err(|error| describe_config_error(&error))?;
+        Ok(config)
+    }
+
+    fn check_names(&self) -> Result<(), (String, String)> {
+        for (index, target) in self.targets.iter().enumerate() {
+            let who = Who::Target(index, &target.name);
+            if target.name == self.ownship.name {
+                return Err((
+                    who.field("name"),
+                    "is the name of ownship: vessel names must be unique".into(),
+                ));
+            }
+            if let Some(first) = self.targets[..index]
+                .iter()
+                .position(|other| other.name == target.name)
+            {
+                return Err((
+                    who.field("name"),
+                    format!("is also the name of targets[{first}]: vessel names must be unique"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn check_clearance(&self, config: &PlannerConfig) -> Result<(), (String, String)> {
+        let own = self.ownship.start_position_m();
+        for (index, target) in self.targets.iter().enumerate() {
+            let range = own.distance(target.start_position_m());
+            if range < config.clearance_m {
+                let field = if target.start_nm.is_some() {
+                    "start_nm"
+                } else {
+                    "start_m"
+                };
+                return Err((
+                    Who::Target(index, &target.name).field(field),
+                    format!(
+                        "is {range:.1} m from ownship's start, inside the planner clearance of {} m",
+                        config.clearance_m
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn check_simulation(&self) -> Result<(), (String, String)> {
+        let settings = &self.simulation;
+        let positive = [
+            ("time_step_s", Some(settings.time_step_s)),
+            ("max_duration_s", settings.max_duration_s),
+            ("replan_deviation_m", Some(settings.replan_deviation_m)),
+        ];
+        for (name, value) in positive {
+            if let Some(value) = value.filter(|value| !(value.is_finite() && *value > 0.0)) {
+                return Err((
+                    format!("simulation.{name}"),
+                    format!("is {value}, expected a finite number greater than 0"),
+                ));
+            }
+        }
+        let steps = self.max_duration_s() / settings.time_step_s;
+        if steps > MAX_SIMULATION_STEPS {
+            return Err((
+                "simulation.time_step_s".into(),
+                format!(
+                    "makes {steps:.0} steps of the {} s simulation, more than the {MAX_SIMULATION_STEPS} allowed",
+                    self.max_duration_s()
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
+
+fn check_position(
+    who: Who<'_>,
+    field: &str,
+    position: Option<(f64, f64)>,
+    scale_to_nm: f64,
+) -> Result<(), (String, String)> {
+    let Some((east, north)) = position else {
+        return Ok(());
+    };
+    for value in [east, north] {
+        if !value.is_finite() {
+            return Err((
+                who.field(field),
+                format!("holds {value}, not a finite number"),
+            ));
+        }
+    }
+    if east.hypot(north) * scale_to_nm > MAX_EXTENT_NM {
+        return Err((
+            who.field(field),
+            format!("is more than {MAX_EXTENT_NM} nm from the origin"),
+        ));
+    }
+    Ok(())
+}
+
+/// Normalises a course in degrees into `[0, 360)`.
+fn normalise_course_deg(course_deg: f64) -> f64 {
+    let course = course_deg.rem_euclid(360.0);
+    // rem_euclid of a tiny negative number rounds to 360.
+    if course >= 360.0 { 0.0 } else { course }
+}
+
+fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, String)> {
+    if vessel.name.trim().is_empty() {
+        return Err((who.field("name"), "must not be empty".into()));
+    }
+    let m_to_nm = 1.0 / vorrt_geometry::units::NAUTICAL_MILE_M;
+    check_position(who, "start_nm", vessel.start_nm, 1.0)?;
+    check_position(who, "start_m", vessel.start_m, m_to_nm)?;
+    check_position(who, "goal_nm", vessel.goal_nm, 1.0)?;
+    check_position(who, "goal_m", vessel.goal_m, m_to_nm)?;
+    match (vessel.start_nm, vessel.start_m) {
+        (Some(_), Some(_)) => {
+            return Err((
+                who.field("start_nm"),
+                "and start_m are both given: give exactly one of them".into(),
+            ));
+        }
+        (None, None) => {
+            return Err((
+                who.field("start_nm"),
+                "is missing: give exactly one of start_nm and start_m".into(),
+            ));
+        }
+        _ => {}
+    }
+    if vessel.goal_nm.is_some() && vessel.goal_m.is_some() {
+        return Err((
+            who.field("goal_nm"),
+            "and goal_m are both given: give at most one of them".into(),
+        ));
+    }
+    let numbers = [
+        ("course_deg", vessel.course_deg),
+        ("speed_kn", vessel.speed_kn),
+        ("length_m", vessel.length_m),
+    ];
+    for (field, value) in numbers {
+        if !value.is_finite() {
+            return Err((who.field(field), format!("is {value}, not a finite number")));
+        }
+    }
+    vessel.course_deg = normalise_course_deg(vessel.course_deg);
+    if vessel.speed_kn < 0.0 {
+        return Err((
+            who.field("speed_kn"),
+            format!("is {}, speeds must not be negative", vessel.speed_kn),
+        ));
+    }
+    if vessel.speed_kn > MAX_SPEED_KN {
+        return Err((
+            who.field("speed_kn"),
+            format!(
+                "is {}, more than the {MAX_SPEED_KN} kn allowed",
+                vessel.speed_kn
+            ),
+        ));
+    }
+    if !(vessel.length_m > 0.0 && vessel.length_m <= MAX_LENGTH_M) {
+        return Err((
+            who.field("length_m"),
+            format!(
+                "is {}, expected more than 0 and at most {MAX_LENGTH_M} m",
+                vessel.length_m
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
+    let who = Who::Ownship;
+    if ownship.speed_kn <= 0.0 {
+        return Err((
+            who.field("speed_kn"),
+            format!(
+                "is {}, ownship must move (speed greater than 0)",
+                ownship.speed_kn
+            ),
+        ));
+    }
+    let Some(goal) = ownship.goal_position_m() else {
+        return Err((
+            who.field("goal_nm"),
+            "is missing: ownship needs a goal (goal_nm or goal_m)".into(),
+        ));
+    };
+    if goal == ownship.start_position_m() {
+        let field = if ownship.goal_nm.is_some() {
+            "goal_nm"
+        } else {
+            "goal_m"
+        };
+        return Err((
+            who.field(field),
+            "is ownship's start: it must differ".into(),
+        ));
+    }
+    Ok(())
+}
+
+fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
+    let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
+    if lane.name.trim().is_empty() {
+        return Err((field("name"), "must not be empty".into()));
+    }
+    check_position(Who::Ownship, "", Some(lane.from_nm), 1.0)
+        .map_err(|(_, p)| (field("from_nm"), p))?;
+    check_position(Who::Ownship, "", Some(lane.to_nm), 1.0)
+        .map_err(|(_, p)| (field("to_nm"), p))?;
+    if !(lane.width_nm.is_finite() && lane.width_nm > 0.0 && lane.width_nm <= MAX_EXTENT_NM) {
+        return Err((
+            field("width_nm"),
+            format!(
+                "is {}, expected a finite number greater than 0",
+                lane.width_nm
+            ),
+        ));
+    }
+    if DVec2::from(lane.from_nm) == DVec2::from(lane.to_nm) {
+        return Err((
+            field("to_nm"),
+            "is the same point as from_nm: a lane needs a direction".into(),
+        ));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn courses_normalise_into_range() {
+        assert_eq!(normalise_course_deg(-90.0), 270.0);
+        assert_eq!(normalise_course_deg(360.0), 0.0);
+        assert_eq!(normalise_course_deg(725.0), 5.0);
+        assert_eq!(normalise_course_deg(-1e-20), 0.0);
+        assert_eq!(normalise_course_deg(0.0), 0.0);
+    }
+}
