@@ -113,3 +113,89 @@ pub fn load_dir(dir: &Path) -> Result<Vec<(PathBuf, Scenario)>, ScenarioError> {
 pub fn bundled_fixtures_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::planner_settings::PlannerSettings;
+    use crate::scenario::{Behaviour, Lane, SimulationSettings, VesselSpec};
+
+    /// A scenario with every field set (and some at awkward values).
+    fn everything() -> Scenario {
+        let mut ownship = VesselSpec::new("own", (0.0, 0.0), 0.0, 11.5, 75.0);
+        ownship.start_nm = None;
+        ownship.start_m = Some((-12.5, -5556.25));
+        ownship.goal_m = Some((1.0e-3, 5556.0));
+        Scenario {
+            name: "everything".into(),
+            description: Some("all \"fields\"\nset".into()),
+            ownship,
+            targets: vec![
+                VesselSpec::new("A", (1.0 / 3.0, 2.0), 359.999_999, 0.1, 50.0)
+                    .with_goal_nm((-4.0, 2.0)),
+                VesselSpec::new("B", (3.0, -2.0), 90.0, 0.0, 999.0)
+                    .with_behaviour(Behaviour::ConstantVelocity),
+            ],
+            planner: PlannerSettings {
+                clearance_m: Some(150.0),
+                nodes_per_phase: Some(300),
+                nearest_index: Some(vorrt_planner::NearestIndex::RTree),
+                time_budget_s: Some(0.25),
+                mtd_nm: Some(4.5),
+                ..PlannerSettings::default()
+            },
+            simulation: SimulationSettings {
+                time_step_s: 1.0,
+                max_duration_s: Some(3600.0),
+                replan_deviation_m: 25.0,
+            },
+            lanes: vec![Lane {
+                name: "north".into(),
+                from_nm: (0.0, -5.0),
+                to_nm: (0.1, 5.0),
+                width_nm: 0.75,
+            }],
+            seed: Some(u64::MAX),
+            source: "everything".into(),
+        }
+    }
+
+    #[test]
+    fn everything_round_trips() {
+        let mut scenario = everything();
+        scenario.validate().expect("valid");
+        let text = scenario.to_ron_string().expect("writes");
+        let back = Scenario::from_ron_str(&text, "back").expect("reads back");
+        assert_eq!(back, scenario, "{text}");
+        assert_eq!(back.source, "back");
+    }
+
+    #[test]
+    fn defaults_are_left_out_when_writing() {
+        let mut scenario = everything();
+        scenario.planner = PlannerSettings::default();
+        scenario.simulation = SimulationSettings::default();
+        scenario.lanes.clear();
+        scenario.description = None;
+        scenario.seed = None;
+        let text = scenario.to_ron_string().expect("writes");
+        for absent in ["planner", "simulation", "lanes", "description", "seed"] {
+            assert!(!text.contains(absent), "{absent} in {text}");
+        }
+        assert!(!text.contains("Some("), "{text}");
+        assert_eq!(
+            Scenario::from_ron_str(&text, "back").expect("reads"),
+            scenario
+        );
+    }
+
+    #[test]
+    fn equality_ignores_the_source() {
+        let a = everything();
+        let mut b = everything();
+        b.source = "elsewhere".into();
+        assert_eq!(a, b);
+        b.seed = None;
+        assert_ne!(a, b);
+    }
+}

@@ -277,3 +277,117 @@ fn to_file_units(field: &str, value: f64, expected: &str) -> (String, f64, Strin
         _ => (field.to_owned(), value, expected.to_owned()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-9 * b.abs().max(1.0)
+    }
+
+    #[test]
+    fn empty_settings_are_the_default_config() {
+        assert!(PlannerSettings::default().is_empty());
+        assert_eq!(
+            PlannerSettings::default().apply_to(PlannerConfig::default()),
+            PlannerConfig::default()
+        );
+    }
+
+    #[test]
+    fn every_field_maps_to_si() {
+        let settings = PlannerSettings {
+            clearance_m: Some(100.0),
+            step_m: Some(50.0),
+            goal_tolerance_m: Some(60.0),
+            goal_bias: Some(0.3),
+            phase_two_goal_bias: Some(0.1),
+            nodes_per_phase: Some(600),
+            samples_per_phase: Some(9000),
+            max_restarts: Some(5),
+            max_turn_per_step_deg: Some(30.0),
+            sampling_margin_nm: Some(1.5),
+            lookahead_s: Some(900.0),
+            time_budget_s: Some(2.0),
+            nearest_index: Some(NearestIndex::RTree),
+            mtd_nm: Some(4.0),
+            risk_cpa_nm: Some(0.5),
+            head_on_half_width_deg: Some(10.0),
+            abaft_beam_deg: Some(110.0),
+            passed_angle_deg: Some(100.0),
+            turn_tolerance_deg: Some(3.0),
+            stand_on_course_tolerance_deg: Some(12.0),
+            stand_on_speed_tolerance_kn: Some(2.0),
+            stand_on_action_range_nm: Some(1.5),
+            apparent_turn_deg: Some(35.0),
+        };
+        assert_eq!(settings.set_numbers().len(), 19);
+        let config = settings.apply_to(PlannerConfig::default());
+        config.validate().expect("valid");
+        assert_eq!(config.clearance_m, 100.0);
+        assert_eq!(config.step_m, 50.0);
+        assert_eq!(config.goal_tolerance_m, 60.0);
+        assert_eq!(config.goal_bias, 0.3);
+        assert_eq!(config.phase_two_goal_bias, 0.1);
+        assert_eq!(config.nodes_per_phase, 600);
+        assert_eq!(config.samples_per_phase, 9000);
+        assert_eq!(config.max_restarts, 5);
+        assert!(close(config.max_turn_per_step_rad, 30f64.to_radians()));
+        assert!(close(config.sampling_margin_m, 1.5 * 1852.0));
+        assert_eq!(config.lookahead_s, 900.0);
+        assert_eq!(config.time_budget_s, Some(2.0));
+        assert_eq!(config.nearest_index, NearestIndex::RTree);
+        let rules = config.rules;
+        assert!(close(rules.mtd_m, 4.0 * 1852.0));
+        assert!(close(rules.risk_cpa_m, 926.0));
+        assert!(close(rules.head_on_half_width_rad, 10f64.to_radians()));
+        assert!(close(rules.abaft_beam_rad, 110f64.to_radians()));
+        assert!(close(rules.passed_angle_rad, 100f64.to_radians()));
+        assert!(close(rules.turn_tolerance_rad, 3f64.to_radians()));
+        assert!(close(
+            rules.stand_on_course_tolerance_rad,
+            12f64.to_radians()
+        ));
+        assert!(close(
+            rules.stand_on_speed_tolerance_mps,
+            2.0 * 1852.0 / 3600.0
+        ));
+        assert!(close(rules.stand_on_action_range_m, 1.5 * 1852.0));
+        assert!(close(rules.apparent_turn_rad, 35f64.to_radians()));
+    }
+
+    #[test]
+    fn config_errors_are_named_in_file_units() {
+        let bad = |settings: PlannerSettings| {
+            let error = settings
+                .apply_to(PlannerConfig::default())
+                .validate()
+                .expect_err("invalid");
+            describe_config_error(&error)
+        };
+        let (field, problem) = bad(PlannerSettings {
+            sampling_margin_nm: Some(-2.0),
+            ..PlannerSettings::default()
+        });
+        assert_eq!(field, "planner.sampling_margin_nm");
+        assert!(problem.starts_with("is -2,"), "{problem}");
+        let (field, problem) = bad(PlannerSettings {
+            stand_on_speed_tolerance_kn: Some(-1.0),
+            ..PlannerSettings::default()
+        });
+        assert_eq!(field, "planner.stand_on_speed_tolerance_kn");
+        assert!(problem.starts_with("is -1,"), "{problem}");
+        let (field, problem) = bad(PlannerSettings {
+            abaft_beam_deg: Some(45.0),
+            ..PlannerSettings::default()
+        });
+        assert_eq!(field, "planner.abaft_beam_deg");
+        assert!(problem.starts_with("is 45"), "{problem}");
+        let (field, _) = bad(PlannerSettings {
+            samples_per_phase: Some(10),
+            ..PlannerSettings::default()
+        });
+        assert_eq!(field, "planner.samples_per_phase");
+    }
+}

@@ -224,3 +224,33 @@ fn behaviours_and_metre_positions_convert() {
     scenario.validate().expect("valid");
     assert_eq!(scenario.target_states()[0].goal_m, None);
 }
+
+#[test]
+fn docs_example_is_the_crossing_fixture() {
+    let doc_path = bundled_fixtures_dir().join("../docs/scenario-format.md");
+    let doc = std::fs::read_to_string(&doc_path).expect("docs/scenario-format.md");
+    let example = doc
+        .split("## Complete example")
+        .nth(1)
+        .and_then(|rest| rest.split("```ron\n").nth(1))
+        .and_then(|block| block.split("```").next())
+        .expect("a ron block under Complete example");
+    let scenario = Scenario::from_ron_str(example, "docs example").expect("docs example loads");
+    assert_eq!(scenario, paper("crossing"));
+}
+
+#[test]
+fn explicit_some_and_anonymous_structs_are_accepted() {
+    let text = r#"(
+        name: "plain",
+        ownship: (name: "own", start_m: (0.0, 0.0), course_deg: 0.0, speed_kn: 10.0,
+                  length_m: 60.0, goal_m: Some((0.0, 5000.0))),
+        targets: [(name: "anchored", start_m: (500.0, 2500.0), course_deg: 0.0,
+                   speed_kn: 0.0, length_m: 80.0)],
+        seed: Some(7),
+    )"#;
+    let scenario = Scenario::from_ron_str(text, "plain.ron").expect("loads");
+    assert_eq!(scenario.ownship.goal_m, Some((0.0, 5000.0)));
+    assert_eq!(scenario.seed, Some(7));
+    assert_eq!(scenario.planning_problem().targets[0].goal_m, None);
+}
