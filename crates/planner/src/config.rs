@@ -50,6 +50,10 @@ pub struct PlannerConfig {
     pub max_restarts: usize,
     /// Largest course change at one node, radians: a sample that asks for more
     /// is steered toward within this limit (erratum 10: a turn-rate bound).
+    /// Default 30° per `d'` (a turning radius of about 190 m at 100 m
+    /// steps): on the 22 Imazu cases × 10 seeds it succeeds more often and
+    /// gives shorter paths than 45° (209 vs 205 of 220 at 600 nodes a phase,
+    /// before goal-facing nearest nodes), while 20° fails far more (185).
     pub max_turn_per_step_rad: f64,
     /// Margin around the start-goal box in which random samples fall, metres.
     pub sampling_margin_m: f64,
@@ -77,7 +81,7 @@ impl Default for PlannerConfig {
             nodes_per_phase: 200,
             samples_per_phase: 4000,
             max_restarts: 3,
-            max_turn_per_step_rad: 45f64.to_radians(),
+            max_turn_per_step_rad: 30f64.to_radians(),
             sampling_margin_m: 2.0 * 1852.0,
             lookahead_s: 1800.0,
             time_budget_s: None,

@@ -21,6 +21,8 @@ pub struct Tree {
     pub positions: Vec<DVec2>,
     /// Ownship's course on the segment into each node, radians.
     pub courses: Vec<f64>,
+    /// Unit vector of each node's course (x east, y north).
+    pub headings: Vec<DVec2>,
     /// Time of each node, seconds.
     pub times: Vec<f64>,
     /// Parent of each node (the root is its own parent).
@@ -37,11 +39,13 @@ impl Tree {
     pub fn reset(&mut self, capacity: usize, targets: usize, index: NearestIndex) {
         self.positions.clear();
         self.courses.clear();
+        self.headings.clear();
         self.times.clear();
         self.parents.clear();
         self.latches.clear();
         self.positions.reserve(capacity);
         self.courses.reserve(capacity);
+        self.headings.reserve(capacity);
         self.times.reserve(capacity);
         self.parents.reserve(capacity);
         self.latches.reserve(capacity * targets);
@@ -75,6 +79,8 @@ impl Tree {
         let index = self.positions.len() as u32;
         self.positions.push(position_m);
         self.courses.push(course_rad);
+        self.headings
+            .push(vorrt_geometry::angle::course_to_unit(course_rad));
         self.times.push(time_s);
         self.parents.push(parent);
         self.latches.extend_from_slice(latches);
@@ -113,6 +119,53 @@ impl Tree {
                 .rtree
                 .nearest_neighbor(&[point_m.x, point_m.y])
                 .map(|entry| entry.data),
+        }
+    }
+
+    /// The node nearest to `point_m` among those that can head for it within
+    /// one bounded turn: the angle between the node's course and the
+    /// direction to the point is at most `acos(min_cos)`. Falls back to
+    /// [`nearest`](Self::nearest) when no node faces the point. Ties go to the
+    /// older node, whichever index is used.
+    #[must_use]
+    pub fn nearest_facing(&self, point_m: DVec2, min_cos: f64) -> Option<u32> {
+        let faces = |index: usize| {
+            let offset = point_m - self.positions[index];
+            self.headings[index].dot(offset) >= min_cos * offset.length()
+        };
+        match self.index {
+            NearestIndex::Linear => {
+                let mut best = None;
+                let mut best_distance = f64::INFINITY;
+                for (index, position) in self.positions.iter().enumerate() {
+                    let distance = position.distance_squared(point_m);
+                    if distance < best_distance && faces(index) {
+                        best_distance = distance;
+                        best = Some(index as u32);
+                    }
+                }
+                best.or_else(|| self.nearest(point_m))
+            }
+            NearestIndex::RTree => {
+                let query = [point_m.x, point_m.y];
+                let mut best: Option<(f64, u32)> = None;
+                for entry in self.rtree.nearest_neighbor_iter(&query) {
+                    let index = entry.data;
+                    let distance = self.positions[index as usize].distance_squared(point_m);
+                    if let Some((best_distance, best_index)) = best {
+                        if distance > best_distance {
+                            break;
+                        }
+                        if index < best_index && faces(index as usize) {
+                            best = Some((distance, index));
+                        }
+                    } else if faces(index as usize) {
+                        best = Some((distance, index));
+                    }
+                }
+                best.map(|(_, index)| index)
+                    .or_else(|| self.nearest(point_m))
+            }
         }
     }
 
@@ -156,6 +209,22 @@ mod tests {
                 linear.positions[a as usize].distance(probe),
                 indexed.positions[b as usize].distance(probe)
             );
+        }
+    }
+
+    #[test]
+    fn facing_nearest_skips_nodes_pointing_away() {
+        for index in [NearestIndex::Linear, NearestIndex::RTree] {
+            let mut tree = Tree::default();
+            tree.reset(4, 0, index);
+            // Nearest to the point, but heading south, away from it.
+            tree.push(DVec2::new(0.0, 90.0), std::f64::consts::PI, 0.0, 0, &[]);
+            tree.push(DVec2::new(0.0, 50.0), 0.0, 0.0, 0, &[]);
+            let point = DVec2::new(0.0, 100.0);
+            assert_eq!(tree.nearest(point), Some(0));
+            assert_eq!(tree.nearest_facing(point, 0.5), Some(1));
+            // Nobody faces a point due east at 90°+: fall back to the nearest.
+            assert_eq!(tree.nearest_facing(DVec2::new(1000.0, 70.0), 0.9), Some(0));
         }
     }
 

@@ -3,7 +3,8 @@
 //! A run grows a tree from ownship's state: in phase 1 each sample is the goal
 //! with probability `goal_bias` (erratum 5), else a uniform point; in phase 2
 //! the goal bias is `phase_two_goal_bias` (the paper's 0). The nearest node is
-//! extended by the joint forward step (ownship `d'` toward the sample, turn
+//! extended (for a goal sample, the nearest node that faces the goal within
+//! one bounded turn, when there is one) by the joint forward step (ownship `d'` toward the sample, turn
 //! bounded by `max_turn_per_step_rad`; every target for the same time) and the
 //! move is kept when [`SafetyChecker`](crate::safety::SafetyChecker) accepts
 //! it. A phase ends after `nodes_per_phase` accepted nodes or
@@ -206,7 +207,16 @@ impl Planner {
                 });
             }
             let sample = sampler.sample(problem.goal_m, goal_bias);
-            let Some(parent) = self.tree.nearest(sample) else {
+            // A goal sample extends the nearest node that can head for the
+            // goal within one bounded turn: the plainly nearest node often
+            // points away and would only orbit the goal.
+            let parent = if sample == problem.goal_m {
+                self.tree
+                    .nearest_facing(sample, config.max_turn_per_step_rad.cos())
+            } else {
+                self.tree.nearest(sample)
+            };
+            let Some(parent) = parent else {
                 break;
             };
             let candidate = steer(
@@ -262,6 +272,9 @@ impl Planner {
                             problem.start_time_s,
                             &config,
                         );
+                        // Exactly on the goal, whatever the rounding of
+                        // start + velocity × duration.
+                        self.tree.positions[goal as usize] = problem.goal_m;
                         return Ok(Growth::Reached(goal));
                     }
                     Err(cause) => statistics.rejections.record(cause),

@@ -1,0 +1,453 @@
+//! Property and integration tests of the planner.
+//!
+//! Two-vessel encounters (head-on, crossing give-way, overtaking) are
+//! generated with random geometry and speeds, the target inside MTD on a
+//! collision course or nearly so and ownship's goal beyond the encounter.
+//! Every successful plan is checked *independently* of the planner's own
+//! checker: clearance by `vorrt_geometry` CPA over each segment against the
+//! target's predicted motion (`TargetState::predict`), rules 14 and 15 by the
+//! geometry of the planned path. A failed plan is allowed in the property,
+//! and [`success_rate_is_high`] asserts that few generated encounters fail.
+//!
+//! Rules 14 and 15 are checked when the planner latched the encounter at the
+//! start (the generated target is inside MTD, on a collision course or nearly
+//! so, which makes it one).
+//!
+//! The case count is kept small (32) so the debug-build test stays quick;
+//! set `VORRT_HEAVY_TESTS=1` for a heavier run (512 cases).
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
+
+use glam::DVec2;
+use proptest::prelude::*;
+use std::time::{Duration, Instant};
+use vorrt_colregs::{Encounter, VesselState, crosses_ahead};
+use vorrt_geometry::angle;
+use vorrt_geometry::cpa::cpa_clamped;
+use vorrt_jfs::TargetState;
+use vorrt_planner::{NearestIndex, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
+
+const NM: f64 = 1852.0;
+const KNOT: f64 = 1852.0 / 3600.0;
+
+fn cases() -> u32 {
+    if std::env::var("VORRT_HEAVY_TESTS").is_ok_and(|value| value == "1") {
+        512
+    } else {
+        32
+    }
+}
+
+fn config() -> PlannerConfig {
+    PlannerConfig {
+        nodes_per_phase: 400,
+        ..PlannerConfig::default()
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Kind {
+    HeadOn,
+    CrossingGiveWay,
+    Overtaking,
+}
+
+/// Ownship at the origin heading north; the target 2.5-4.5 nm away (inside
+/// MTD), placed so that it would be `miss_m` from ownship when they meet (a
+/// collision course or nearly so).
+#[derive(Debug, Clone)]
+struct Case {
+    kind: Kind,
+    problem: PlanningProblem,
+}
+
+fn encounter() -> impl Strategy<Value = Case> {
+    (
+        0usize..3,
+        8.0f64..14.0,   // ownship speed, knots
+        0.0f64..1.0,    // target speed factor
+        -8.0f64..8.0,   // course jitter, degrees
+        2.5f64..4.5,    // initial range, nautical miles
+        -60.0f64..60.0, // miss distance, metres
+    )
+        .prop_map(
+            |(kind, own_kn, speed_factor, jitter_deg, range_nm, miss_m)| {
+                let kind = [Kind::HeadOn, Kind::CrossingGiveWay, Kind::Overtaking][kind];
+                let own_speed = own_kn * KNOT;
+                let (course_deg, target_speed) = match kind {
+                    Kind::HeadOn => (180.0 + jitter_deg, own_speed * (0.6 + 0.6 * speed_factor)),
+                    Kind::CrossingGiveWay => (
+                        270.0 + 4.0 * jitter_deg,
+                        own_speed * (0.6 + 0.6 * speed_factor),
+                    ),
+                    Kind::Overtaking => (0.5 * jitter_deg, own_speed * (0.2 + 0.3 * speed_factor)),
+                };
+                let course = f64::to_radians(course_deg);
+                let target_velocity = angle::velocity(course, target_speed);
+                // Closing at the relative speed, the range is about `range_nm`.
+                let closing = (DVec2::new(0.0, own_speed) - target_velocity).length();
+                let meet_s = range_nm * NM / closing;
+                let meeting = DVec2::new(miss_m, own_speed * meet_s);
+                let start = meeting - target_velocity * meet_s;
+                let own = VesselState::new(DVec2::ZERO, 0.0, own_speed, 60.0);
+                let target = TargetState::constant_velocity(VesselState::new(
+                    start,
+                    course,
+                    target_speed,
+                    80.0,
+                ));
+                let goal = DVec2::new(0.0, meeting.y + 2.0 * NM);
+                Case {
+                    kind,
+                    problem: PlanningProblem::new(own, goal, vec![target]),
+                }
+            },
+        )
+}
+
+/// The smallest distance between the planned path and the target's predicted
+/// motion, segment by segment, with the geometry crate's CPA.
+fn min_clearance(plan: &Plan, target: &TargetState, start_time_s: f64) -> f64 {
+    plan.waypoints
+        .windows(2)
+        .map(|pair| {
+            let (from, to) = (pair[0], pair[1]);
+            let duration = to.time_s - from.time_s;
+            let target_then = target.predict(from.time_s - start_time_s).vessel;
+            let own_velocity = if duration > 0.0 {
+                (to.position_m - from.position_m) / duration
+            } else {
+                DVec2::ZERO
+            };
+            cpa_clamped(
+                from.position_m - target_then.position_m,
+                own_velocity - target_then.velocity_mps(),
+                duration.max(0.0),
+            )
+            .distance_m
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The first course change along the plan, signed (positive to starboard).
+fn first_turn(plan: &Plan) -> Option<f64> {
+    let start = plan.waypoints[0].course_rad;
+    plan.waypoints
+        .iter()
+        .skip(1)
+        .map(|waypoint| angle::signed_turn(start, waypoint.course_rad))
+        .find(|turn| turn.abs() > 1e-9)
+}
+
+/// The target's relative bearing from ownship where the two are closest
+/// along the plan (sampled every 2 s).
+fn bearing_at_closest(plan: &Plan, target: &TargetState) -> f64 {
+    let first = plan.waypoints[0].time_s;
+    let last = plan.waypoints.last().unwrap().time_s;
+    let mut best = (f64::INFINITY, 0.0);
+    let mut time = first;
+    while time <= last {
+        let (position, course) = plan.position_at(time).unwrap();
+        let target_position = target.predict(time - first).vessel.position_m;
+        let distance = position.distance(target_position);
+        if distance < best.0 {
+            best = (
+                distance,
+                angle::relative_bearing(position, course, target_position),
+            );
+        }
+        time += 2.0;
+    }
+    best.1
+}
+
+/// Whether ownship crosses the target's track ahead of the target during
+/// some segment: `crosses_ahead` holds for the segment's velocity and the
+/// side of the target's track ownship is on changes within the segment.
+fn crosses_ahead_anywhere(plan: &Plan, target: &TargetState) -> bool {
+    let first = plan.waypoints[0].time_s;
+    plan.waypoints.windows(2).any(|pair| {
+        let (from, to) = (pair[0], pair[1]);
+        let duration = to.time_s - from.time_s;
+        if duration <= 0.0 {
+            return false;
+        }
+        let velocity = (to.position_m - from.position_m) / duration;
+        let before = target.predict(from.time_s - first).vessel;
+        let after = target.predict(to.time_s - first).vessel;
+        let heading = before.velocity_mps().normalize_or_zero();
+        let side_before = vorrt_geometry::cross(heading, from.position_m - before.position_m);
+        let side_after = vorrt_geometry::cross(heading, to.position_m - after.position_m);
+        side_before.signum() != side_after.signum()
+            && crosses_ahead(
+                from.position_m,
+                velocity,
+                before.position_m,
+                before.velocity_mps(),
+            )
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    #[test]
+    fn plans_keep_clearance_and_obey_rules(case in encounter(), seed in 0u64..1000) {
+        let mut planner = Planner::new(config()).unwrap();
+        let problem = &case.problem;
+        let plan = match planner.plan(problem, seed) {
+            Ok(plan) => plan,
+            // Allowed here; counted by `success_rate_is_high`.
+            Err(PlannerError::NoSafePath { .. } | PlannerError::BudgetExhausted { .. }) => {
+                return Ok(());
+            }
+            Err(other) => return Err(TestCaseError::fail(other.to_string())),
+        };
+        let target = &problem.targets[0];
+        // (1) d_th along every segment, checked independently.
+        let clearance = min_clearance(&plan, target, problem.start_time_s);
+        prop_assert!(
+            clearance >= planner.config().clearance_m - 1e-6,
+            "{:?}: clearance {}", case.kind, clearance
+        );
+        prop_assert_eq!(plan.waypoints.last().unwrap().position_m, problem.goal_m);
+        // The rules are checked when the encounter is in force from the start.
+        let in_force = plan.encounters[0][0].map(|latch| latch.encounter);
+        match (case.kind, in_force) {
+            (Kind::HeadOn, Some(Encounter::HeadOn)) => {
+                // (2) the first course change is to starboard;
+                if let Some(turn) = first_turn(&plan) {
+                    prop_assert!(turn > 0.0, "head-on: first turn {}°", turn.to_degrees());
+                }
+                // (3) and the vessels pass port to port.
+                let bearing = bearing_at_closest(&plan, target);
+                prop_assert!(
+                    bearing > std::f64::consts::PI,
+                    "head-on passed at relative bearing {}°", bearing.to_degrees()
+                );
+            }
+            (Kind::CrossingGiveWay, Some(Encounter::CrossingGiveWay)) => {
+                if let Some(turn) = first_turn(&plan) {
+                    prop_assert!(turn > 0.0, "crossing: first turn {}°", turn.to_degrees());
+                }
+                prop_assert!(!crosses_ahead_anywhere(&plan, target), "crossed ahead of the stand-on vessel");
+            }
+            _ => {}
+        }
+        // (4) The same seed gives the same plan.
+        let again = Planner::new(config()).unwrap().plan(problem, seed).unwrap();
+        prop_assert_eq!(&plan.waypoints, &again.waypoints);
+    }
+}
+
+/// The success rate over a fixed sample of generated encounters.
+#[test]
+fn success_rate_is_high() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+    let mut runner = TestRunner::new_with_rng(
+        Config::default(),
+        TestRng::from_seed(RngAlgorithm::ChaCha, &[7; 32]),
+    );
+    let strategy = encounter();
+    let total = cases();
+    let mut failures = 0u32;
+    let mut latched = 0u32;
+    let mut planner = Planner::new(config()).unwrap();
+    for seed in 0..u64::from(total) {
+        let case = strategy.new_tree(&mut runner).unwrap().current();
+        match planner.plan(&case.problem, seed) {
+            Ok(plan) => {
+                if case.kind != Kind::Overtaking && plan.encounters[0][0].is_some() {
+                    latched += 1;
+                }
+            }
+            Err(_) => failures += 1,
+        }
+    }
+    // The rule checks of the property are exercised: most head-on and
+    // crossing cases are encounters in force from the start.
+    assert!(
+        latched * 3 >= total,
+        "only {latched} of {total} latched ({failures} failed)"
+    );
+    assert!(
+        f64::from(failures) <= 0.1 * f64::from(total),
+        "{failures} of {total} encounters found no plan"
+    );
+}
+
+fn head_on() -> PlanningProblem {
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let target = TargetState::constant_velocity(VesselState::new(
+        DVec2::new(0.0, 5000.0),
+        std::f64::consts::PI,
+        6.0,
+        50.0,
+    ));
+    PlanningProblem::new(own, DVec2::new(0.0, 9000.0), vec![target])
+}
+
+#[test]
+fn different_seeds_may_differ() {
+    let mut planner = Planner::new(config()).unwrap();
+    let plans: Vec<_> = (0..4)
+        .map(|seed| planner.plan(&head_on(), seed).unwrap().waypoints)
+        .collect();
+    assert!(plans.windows(2).any(|pair| pair[0] != pair[1]));
+}
+
+#[test]
+fn linear_and_rtree_give_the_same_plan() {
+    for seed in 0..3 {
+        let linear = Planner::new(config())
+            .unwrap()
+            .plan(&head_on(), seed)
+            .unwrap();
+        let rtree = Planner::new(PlannerConfig {
+            nearest_index: NearestIndex::RTree,
+            ..config()
+        })
+        .unwrap()
+        .plan(&head_on(), seed)
+        .unwrap();
+        assert_eq!(linear.waypoints, rtree.waypoints);
+    }
+}
+
+#[test]
+fn config_validation_names_the_field() {
+    let defaults = PlannerConfig::default();
+    let bad = [
+        (
+            PlannerConfig {
+                max_turn_per_step_rad: 0.0,
+                ..defaults
+            },
+            "max_turn_per_step_rad",
+        ),
+        (
+            PlannerConfig {
+                samples_per_phase: 10,
+                ..defaults
+            },
+            "samples_per_phase",
+        ),
+        (
+            PlannerConfig {
+                sampling_margin_m: -1.0,
+                ..defaults
+            },
+            "sampling_margin_m",
+        ),
+        (
+            PlannerConfig {
+                lookahead_s: f64::INFINITY,
+                ..defaults
+            },
+            "lookahead_s",
+        ),
+        (
+            PlannerConfig {
+                phase_two_goal_bias: -0.1,
+                ..defaults
+            },
+            "phase_two_goal_bias",
+        ),
+        (
+            PlannerConfig {
+                max_restarts: 5000,
+                ..defaults
+            },
+            "max_restarts",
+        ),
+    ];
+    for (config, field) in bad {
+        let message = Planner::new(config).expect_err(field).to_string();
+        assert!(message.contains(field), "{message}");
+    }
+}
+
+#[test]
+fn problem_validation_names_the_field() {
+    let mut planner = Planner::new(config()).unwrap();
+    let mut nan = head_on();
+    nan.ownship.position_m.x = f64::NAN;
+    let mut stopped = head_on();
+    stopped.ownship.speed_mps = 0.0;
+    let mut encounters = head_on();
+    encounters.encounters = vec![None, None];
+    let mut target_nan = head_on();
+    target_nan.targets[0].vessel.course_rad = f64::NAN;
+    for (problem, field) in [
+        (nan, "ownship.position_m"),
+        (stopped, "ownship.speed_mps"),
+        (encounters, "encounters"),
+        (target_nan, "targets[0].course_rad"),
+    ] {
+        let error = planner.plan(&problem, 0).expect_err(field);
+        assert!(
+            matches!(error, PlannerError::InvalidProblem { .. }),
+            "{error}"
+        );
+        assert!(error.to_string().contains(field), "{error}");
+    }
+}
+
+/// Ownship ringed by eight vessels at rest 300 m away: every way out passes
+/// within `d_th` = 200 m of one of them or ... is blocked by the clearance.
+fn boxed_in() -> PlanningProblem {
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let targets = (0..8)
+        .map(|index| {
+            let bearing = f64::from(index) * std::f64::consts::FRAC_PI_4;
+            TargetState::constant_velocity(VesselState::new(
+                angle::course_to_unit(bearing) * 300.0,
+                0.0,
+                0.0,
+                50.0,
+            ))
+        })
+        .collect();
+    PlanningProblem::new(own, DVec2::new(0.0, 5000.0), targets)
+}
+
+#[test]
+fn boxed_in_ownship_gets_no_safe_path_naming_the_cause() {
+    let started = Instant::now();
+    let mut planner = Planner::new(PlannerConfig {
+        samples_per_phase: 2000,
+        max_restarts: 1,
+        ..config()
+    })
+    .unwrap();
+    let error = planner.plan(&boxed_in(), 3).expect_err("boxed in");
+    let PlannerError::NoSafePath { statistics } = &error else {
+        panic!("{error}");
+    };
+    // Two restarts of two phases, each ending on its sample budget.
+    assert_eq!(statistics.samples, 2 * 2 * 2000);
+    assert!(statistics.rejections.dominant_cause().is_some());
+    assert!(
+        error.to_string().contains("most samples were rejected by"),
+        "{error}"
+    );
+    assert!(started.elapsed() < Duration::from_secs(10));
+}
+
+#[test]
+fn tiny_budget_is_exhausted_quickly() {
+    let mut planner = Planner::new(PlannerConfig {
+        time_budget_s: Some(1e-4),
+        samples_per_phase: 1_000_000,
+        max_restarts: 100,
+        ..config()
+    })
+    .unwrap();
+    let started = Instant::now();
+    let error = planner.plan(&boxed_in(), 1).expect_err("budget");
+    assert!(
+        matches!(error, PlannerError::BudgetExhausted { .. }),
+        "{error}"
+    );
+    assert!(started.elapsed() < Duration::from_secs(1));
+}
