@@ -97,6 +97,60 @@ pub struct Evaluation {
     pub targets: Vec<TargetEvaluation>,
 }
 
+impl Evaluation {
+    /// The evaluation as a plain-text table: one row per target, then the run's
+    /// totals. For examples and terminals; the command line writes JSON too.
+    #[must_use]
+    pub fn table(&self) -> String {
+        use std::fmt::Write as _;
+        let mut text = String::new();
+        let _ = writeln!(
+            text,
+            "{:<10} {:<18} {:<9} {:>9} {:>8} {:>9} {:>6}  violations",
+            "target", "encounter", "role", "min [m]", "at [min]", "compliant", "score"
+        );
+        for target in &self.targets {
+            let _ = writeln!(
+                text,
+                "{:<10} {:<18} {:<9} {:>9.0} {:>8.1} {:>9} {:>6.2}  {}",
+                target.name,
+                target.encounter.name(),
+                target.role.name(),
+                target.min_distance_m,
+                target.time_of_min_s / 60.0,
+                if target.compliant { "yes" } else { "NO" },
+                target.score,
+                if target.violations.is_empty() {
+                    "-".to_owned()
+                } else {
+                    target.violations.join("; ")
+                },
+            );
+        }
+        let _ = writeln!(
+            text,
+            "goal reached: {} | min distance {:.0} m (d_th {:.0} m): {} | collision: {} | path {:.0} m, +{:.1}% over straight | time +{:.1}% | plans {} (replans {}, failed {}), planning {:.1} ms",
+            if self.reached_goal { "yes" } else { "NO" },
+            self.min_distance_m,
+            self.clearance_m,
+            if self.clearance_kept {
+                "kept"
+            } else {
+                "BROKEN"
+            },
+            if self.collision { "YES" } else { "no" },
+            self.path_length_m,
+            self.path_overhead_pct,
+            self.time_overhead_pct,
+            self.plans_made,
+            self.replans,
+            self.failed_plans,
+            self.planning_time_s * 1e3,
+        );
+        text
+    }
+}
+
 /// Scoring constants for a scenario: its own clearance as `d_th`, with the
 /// near-miss and collision ranges at the default proportions beneath it (1/2
 /// and 1/8: 100 m and 25 m for the open-sea 200 m).
