@@ -46,6 +46,34 @@ fn main() -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// What the table means where it departs from a clean pass; kept beside the
+/// code so that a regenerated page keeps it. Re-read it when the numbers change.
+const NOTES: &str = "
+## Reading the table
+
+- **Paper figures.** The paper gives no coordinates, speeds or sizes, so its
+  numbers are not reproducible; our fixtures state theirs and are at least as
+  demanding (every target on or near a collision course). The paper's minimum
+  CPAs (1365 m overtaking, 470 m head-on, 300 m multi-vessel, 135 m in the TSS)
+  are all above d_th, as ours are. Our TSS crossing keeps far more than 135 m
+  because the planner passes astern of every give-way target in the stream
+  (rule 15 read strictly) and does not turn to port while they are latched, so
+  it waits for gaps and the path grows (see its overhead).
+- **Rule 17(c) findings** (Imazu 4, 13, 16): a stand-on ownship that had
+  already acted turns a few degrees to port of its original course. The
+  planner judges the release of an encounter at its 100 m nodes on the course
+  that led there, the evaluator at 5 s samples on the course being steered;
+  when the turn back toward the goal comes right at the release, the evaluator
+  still sees the encounter in force. Holding the latch longer in the planner
+  removes these findings but halves the planner's success on the Imazu set
+  (measured: 104-109 of 220 plans against 210 of 220); left as it is.
+- **Rule 16 \"not readily apparent\"** (Imazu 5, 8, 10): the give-way turn was
+  between 23 and 30 degrees; evaluators ask for 30 or more. The planner does not
+  yet demand a minimum alteration; clearance was kept (min distances above).
+- **Imazu 5 = 8 and 15 = 22** are duplicates in the published table (notes), so
+  their rows agree.
+";
+
 fn print_markdown(rows: &[(&str, Evaluation)]) {
     let reached = rows.iter().filter(|(_, e)| e.reached_goal).count();
     let kept = rows.iter().filter(|(_, e)| e.clearance_kept).count();
@@ -117,4 +145,5 @@ fn print_markdown(rows: &[(&str, Evaluation)]) {
             paper_figure(&evaluation.scenario),
         );
     }
+    print!("{NOTES}");
 }
