@@ -5,7 +5,7 @@
 //! is placed at `(NaN, NaN)`, which [`PlanningProblem::validate`] rejects;
 //! nothing here panics.
 
-use crate::scenario::{Behaviour, DEFAULT_DURATION_FACTOR, Lane, Scenario, VesselSpec};
+use crate::scenario::{DEFAULT_DURATION_FACTOR, Lane, Scenario, VesselSpec};
 use vorrt_colregs::VesselState;
 use vorrt_geometry::{DVec2, angle, units};
 use vorrt_jfs::TargetState;
@@ -58,13 +58,17 @@ impl VesselSpec {
         )
     }
 
-    /// The vessel as a planner target: [`TargetState::toward_goal`] when it
-    /// has a goal and behaves [`Behaviour::ConstantToGoal`] (its course is
-    /// then the bearing of its goal), else [`TargetState::constant_velocity`].
+    /// The vessel as a planner target, as it announces itself:
+    /// [`TargetState::toward_goal`] when it has a goal and its behaviour
+    /// announces one (every behaviour but [`Behaviour::ConstantVelocity`](crate::Behaviour::ConstantVelocity);
+    /// its course is then the bearing of its goal), else
+    /// [`TargetState::constant_velocity`].
     #[must_use]
     pub fn target_state(&self) -> TargetState {
-        match (self.behaviour, self.goal_position_m()) {
-            (Behaviour::ConstantToGoal, Some(goal)) => TargetState::toward_goal(self.state(), goal),
+        match self.goal_position_m() {
+            Some(goal) if self.behaviour.announces_goal() => {
+                TargetState::toward_goal(self.state(), goal)
+            }
             _ => TargetState::constant_velocity(self.state()),
         }
     }

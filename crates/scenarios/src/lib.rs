@@ -17,6 +17,7 @@
 //! | [`convert`] | [`Scenario::planning_problem`] and the other conversions to SI |
 //! | [`io`] | [`Scenario::from_ron_str`], [`Scenario::load`], [`Scenario::to_ron_string`], [`load_dir`] |
 //! | [`simulation`] | [`simulate`]: the closed loop — ownship follows its plan and replans when it stops being valid; every trajectory recorded |
+//! | [`generator`] | seeded Monte Carlo scenarios: [`OpenSeaSpec`] (targets on near-collision courses in a chosen mix of encounter types) and [`TssSpec`] (crossing a traffic lane at a chosen density), one random stream per scenario index |
 //! | [`evaluation`] | [`evaluate`]: goal reached, minimum distance per target, COLREGs compliance with violations named, per-rule scores, path overhead |
 //! | [`error`] | [`ScenarioError`] |
 //!
@@ -44,6 +45,7 @@
 pub mod convert;
 pub mod error;
 pub mod evaluation;
+pub mod generator;
 pub mod io;
 pub mod planner_settings;
 pub mod scenario;
@@ -52,11 +54,15 @@ pub mod validate;
 
 pub use error::ScenarioError;
 pub use evaluation::{Evaluation, TargetEvaluation, evaluate, evaluate_with, scoring_for};
+pub use generator::{
+    EncounterMix, GeneratorError, GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection,
+    TssSpec,
+};
 pub use io::{SCENARIO_EXTENSION, bundled_fixtures_dir, load_dir};
 pub use planner_settings::PlannerSettings;
 pub use scenario::{
-    Behaviour, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M, DEFAULT_TIME_STEP_S, Lane,
-    Scenario, SimulationSettings, VesselSpec,
+    Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
+    DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
 pub use simulation::{PlanEvent, PlanTrigger, SimulationRecord, simulate, simulate_with};
 pub use validate::{MAX_EXTENT_NM, MAX_LENGTH_M, MAX_SIMULATION_STEPS, MAX_SPEED_KN, MAX_TARGETS};

@@ -147,9 +147,17 @@ impl VesselSpec {
 
 /// How a target vessel moves during a scenario.
 ///
-/// Written as a bare variant name in RON: `behaviour: ConstantVelocity`.
-/// More variants (rule-following, noisy and manoeuvring targets) are expected;
-/// match with a wildcard arm outside this crate.
+/// Written in RON as a bare variant name, `behaviour: ConstantVelocity`, or
+/// with its fields, `behaviour: SuddenTurn(at_s: 600.0, turn_deg: 60.0)`.
+///
+/// Whatever a target really does, ownship predicts it from what it announces
+/// (AIS: its destination, course and speed): a target bound for a goal is
+/// predicted steering straight for it at its nominal speed, one without a goal
+/// (or a [`SuddenTurn`](Self::SuddenTurn) target after its turn) holding its
+/// course and speed. A target that strays from that prediction by more than
+/// `simulation.replan_deviation_m` makes ownship replan.
+///
+/// Match with a wildcard arm outside this crate: more variants may come.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 #[non_exhaustive]
 pub enum Behaviour {
@@ -159,13 +167,99 @@ pub enum Behaviour {
     ConstantToGoal,
     /// Hold course and speed for ever, ignoring any goal.
     ConstantVelocity,
+    /// Steer for the goal as [`ConstantToGoal`](Self::ConstantToGoal), but
+    /// obey COLREGs toward ownship: when there is risk of collision with
+    /// ownship and the target's own role (the encounter classified from the
+    /// target's side) is give-way — head-on, crossing with ownship on its
+    /// starboard side, or overtaking ownship — it turns
+    /// [`COLREGS_TURN_DEG`] to starboard from the course it held when the
+    /// risk arose and holds that course until the two have passed, then
+    /// resumes toward its goal. As stand-on vessel it keeps course and speed.
+    /// The rule constants are the scenario's (`planner` section).
+    Colregs,
+    /// Steer for the goal (or hold the nominal course without one) with
+    /// course and speed wandering about the nominal: each is offset by a
+    /// mean-reverting random walk (Ornstein-Uhlenbeck, time constant
+    /// [`NOISE_TIME_CONSTANT_S`]) whose standard deviation is the given sigma.
+    /// The noise comes from a ChaCha8 stream per target derived from the run
+    /// seed, so a run is reproducible.
+    Noisy {
+        /// Standard deviation of the course offset, degrees (≥ 0).
+        course_sigma_deg: f64,
+        /// Standard deviation of the speed offset, knots (≥ 0). The speed
+        /// never goes below 0.
+        speed_sigma_kn: f64,
+    },
+    /// Move as [`ConstantToGoal`](Self::ConstantToGoal) until `at_s`, then
+    /// turn by `turn_deg` (positive to starboard, clockwise) at once and hold
+    /// the new course and speed for ever, abandoning the goal. A target that
+    /// has already arrived stays where it is.
+    SuddenTurn {
+        /// Simulation time of the turn, seconds (≥ 0).
+        at_s: f64,
+        /// The course change, degrees, positive to starboard (in `[-180, 180]`).
+        turn_deg: f64,
+    },
 }
+
+/// How far a [`Behaviour::Colregs`] target turns to starboard when it gives
+/// way, degrees: more than the 30° evaluators call "readily apparent".
+pub const COLREGS_TURN_DEG: f64 = 35.0;
+
+/// Time constant of the course and speed noise of [`Behaviour::Noisy`],
+/// seconds: offsets decorrelate over a few minutes.
+pub const NOISE_TIME_CONSTANT_S: f64 = 120.0;
 
 impl Behaviour {
     /// Whether this is the default, [`Behaviour::ConstantToGoal`].
     #[must_use]
     pub fn is_default(&self) -> bool {
         *self == Self::default()
+    }
+
+    /// Checks the variant's fields: `Err((field, problem))` naming the first
+    /// field that is not finite or out of range (e.g. `"course_sigma_deg"`).
+    ///
+    /// # Errors
+    /// The field's name and what is wrong with it.
+    pub fn check(&self) -> Result<(), (&'static str, String)> {
+        let fields: Vec<(&'static str, f64, f64, f64)> = match *self {
+            Behaviour::ConstantToGoal | Behaviour::ConstantVelocity | Behaviour::Colregs => {
+                Vec::new()
+            }
+            Behaviour::Noisy {
+                course_sigma_deg,
+                speed_sigma_kn,
+            } => vec![
+                ("course_sigma_deg", course_sigma_deg, 0.0, 180.0),
+                ("speed_sigma_kn", speed_sigma_kn, 0.0, 100.0),
+            ],
+            Behaviour::SuddenTurn { at_s, turn_deg } => vec![
+                ("at_s", at_s, 0.0, f64::MAX),
+                ("turn_deg", turn_deg, -180.0, 180.0),
+            ],
+        };
+        for (field, value, low, high) in fields {
+            if !value.is_finite() {
+                return Err((field, format!("is {value}, not a finite number")));
+            }
+            if !(low..=high).contains(&value) {
+                let range = if high == f64::MAX {
+                    format!("at least {low}")
+                } else {
+                    format!("in [{low}, {high}]")
+                };
+                return Err((field, format!("is {value}, expected a number {range}")));
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether the target announces (and ownship predicts) a goal it steers
+    /// for: every behaviour but [`ConstantVelocity`](Self::ConstantVelocity).
+    #[must_use]
+    pub fn announces_goal(&self) -> bool {
+        !matches!(self, Behaviour::ConstantVelocity)
     }
 }
 

@@ -283,6 +283,10 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
             ),
         ));
     }
+    vessel
+        .behaviour
+        .check()
+        .map_err(|(field, problem)| (who.field(&format!("behaviour.{field}")), problem))?;
     Ok(())
 }
 
