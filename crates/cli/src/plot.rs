@@ -1,0 +1,986 @@
+//! Plots of a run, as SVG and PNG (1000 x 800 pixels):
+//!
+//! - `trajectories`: every vessel's track in nautical miles (ownship bold
+//!   black), start dots, a course triangle every few minutes, goal crosses,
+//!   at each target's closest approach the two positions joined by a dashed
+//!   line with the distance written and the `d_th` circle around ownship,
+//!   traffic lanes as shaded strips, and a legend beside the chart.
+//! - `distance`: distance from ownship to each target over time (minutes,
+//!   metres), `d_th` as a horizontal line, each minimum marked and labelled.
+//!
+//! PNG text uses the bundled font (see [`crate::font`]).
+
+use crate::font::{self, FAMILY};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+use vorrt_scenarios::{Evaluation, Scenario, SimulationRecord, TargetEvaluation};
+
+/// Size of every plot, pixels.
+pub const SIZE: (u32, u32) = (1000, 800);
+
+const METRES_PER_NM: f64 = 1852.0;
+
+/// Target colours (Tableau 10), cycled.
+const PALETTE: [RGBColor; 10] = [
+    RGBColor(214, 39, 40),
+    RGBColor(31, 119, 180),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(188, 189, 34),
+    RGBColor(127, 127, 127),
+];
+
+const OWNSHIP_COLOUR: RGBColor = RGBColor(0, 0, 0);
+const CLEARANCE_COLOUR: RGBColor = RGBColor(200, 0, 0);
+const LANE_COLOUR: RGBColor = RGBColor(150, 110, 200);
+
+/// The colour of target `index` in every plot.
+#[must_use]
+pub fn target_colour(index: usize) -> RGBColor {
+    PALETTE[index % PALETTE.len()]
+}
+
+fn to_text<E: std::fmt::Display>(error: E) -> String {
+    format!("cannot draw a plot: {error}")
+}
+
+/// One vessel's track, in nautical miles.
+struct Track<'a> {
+    name: &'a str,
+    colour: RGBColor,
+    points_nm: Vec<(f64, f64)>,
+    courses_rad: Vec<f64>,
+    goal_nm: Option<(f64, f64)>,
+    evaluation: Option<&'a TargetEvaluation>,
+}
+
+/// Everything a plot needs, in plot units.
+struct PlotData<'a> {
+    title: &'a str,
+    d_th_m: f64,
+    times_s: &'a [f64],
+    ownship: Track<'a>,
+    targets: Vec<Track<'a>>,
+    lanes: Vec<LaneShape<'a>>,
+}
+
+/// A traffic lane as drawn.
+struct LaneShape<'a> {
+    name: &'a str,
+    /// The lane's corners, nautical miles.
+    corners_nm: Vec<(f64, f64)>,
+    /// Direction of traffic flow, degrees.
+    course_deg: f64,
+}
+
+fn nm(point_m: glam::DVec2) -> (f64, f64) {
+    (point_m.x / METRES_PER_NM, point_m.y / METRES_PER_NM)
+}
+
+impl<'a> PlotData<'a> {
+    fn new(
+        scenario: &'a Scenario,
+        record: &'a SimulationRecord,
+        evaluation: &'a Evaluation,
+    ) -> Self {
+        let ownship = Track {
+            name: &scenario.ownship.name,
+            colour: OWNSHIP_COLOUR,
+            points_nm: record.ownship.iter().map(|s| nm(s.position_m)).collect(),
+            courses_rad: record.ownship.iter().map(|s| s.course_rad).collect(),
+            goal_nm: Some(nm(scenario.ownship_goal_m())),
+            evaluation: None,
+        };
+        let targets = record
+            .targets
+            .iter()
+            .enumerate()
+            .map(|(index, track)| Track {
+                name: record
+                    .target_names
+                    .get(index)
+                    .map_or("target", String::as_str),
+                colour: target_colour(index),
+                points_nm: track.iter().map(|s| nm(s.position_m)).collect(),
+                courses_rad: track.iter().map(|s| s.course_rad).collect(),
+                goal_nm: scenario
+                    .targets
+                    .get(index)
+                    .and_then(|spec| spec.goal_position_m())
+                    .map(nm),
+                evaluation: evaluation.targets.get(index),
+            })
+            .collect();
+        let lanes = scenario
+            .lanes
+            .iter()
+            .map(|lane| {
+                let from = lane.from_m();
+                let to = lane.to_m();
+                let along = (to - from).normalize_or_zero();
+                let across = glam::DVec2::new(-along.y, along.x) * (0.5 * lane.width_m());
+                let corners = vec![
+                    nm(from + across),
+                    nm(to + across),
+                    nm(to - across),
+                    nm(from - across),
+                ];
+                LaneShape {
+                    name: lane.name.as_str(),
+                    corners_nm: corners,
+                    course_deg: lane.traffic_course_rad().to_degrees().rem_euclid(360.0),
+                }
+            })
+            .collect();
+        Self {
+            title: &scenario.name,
+            d_th_m: evaluation.clearance_m,
+            times_s: &record.times_s,
+            ownship,
+            targets,
+            lanes,
+        }
+    }
+
+    fn duration_s(&self) -> f64 {
+        self.times_s.last().copied().unwrap_or(0.0)
+    }
+
+    /// Index of the recorded step nearest `time_s`.
+    fn step_at(&self, time_s: f64) -> usize {
+        let after = self.times_s.partition_point(|&t| t < time_s);
+        if after == 0 {
+            return 0;
+        }
+        if after >= self.times_s.len() {
+            return self.times_s.len().saturating_sub(1);
+        }
+        if time_s - self.times_s[after - 1] <= self.times_s[after] - time_s {
+            after - 1
+        } else {
+            after
+        }
+    }
+}
+
+/// Writes `trajectories.svg/.png` and `distance.svg/.png` into `dir`.
+///
+/// # Errors
+/// A message when a file cannot be drawn or written.
+pub fn write_plots(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+    evaluation: &Evaluation,
+    dir: &Path,
+) -> Result<(), String> {
+    font::register();
+    let data = PlotData::new(scenario, record, evaluation);
+    let file = |name: &str| dir.join(name);
+    {
+        let path = file("trajectories.svg");
+        let root = SVGBackend::new(&path, SIZE).into_drawing_area();
+        draw_trajectories(&root, &data)?;
+        root.present().map_err(to_text)?;
+    }
+    {
+        let path = file("trajectories.png");
+        let root = BitMapBackend::new(&path, SIZE).into_drawing_area();
+        draw_trajectories(&root, &data)?;
+        root.present().map_err(to_text)?;
+    }
+    {
+        let path = file("distance.svg");
+        let root = SVGBackend::new(&path, SIZE).into_drawing_area();
+        draw_distance(&root, &data)?;
+        root.present().map_err(to_text)?;
+    }
+    {
+        let path = file("distance.png");
+        let root = BitMapBackend::new(&path, SIZE).into_drawing_area();
+        draw_distance(&root, &data)?;
+        root.present().map_err(to_text)?;
+    }
+    Ok(())
+}
+
+/// A rectangle of the data plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct View {
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+}
+
+impl View {
+    fn contains(&self, (x, y): (f64, f64)) -> bool {
+        (self.x0..=self.x1).contains(&x) && (self.y0..=self.y1).contains(&y)
+    }
+}
+
+/// The smallest view holding `points`, padded, with `width_px / height_px`
+/// as its aspect ratio so that one nautical mile is as long east as north.
+fn fit_view(points: impl Iterator<Item = (f64, f64)>, width_px: f64, height_px: f64) -> View {
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    for (x, y) in points.filter(|(x, y)| x.is_finite() && y.is_finite()) {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    if !x0.is_finite() {
+        (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
+    }
+    let span = (x1 - x0).max(y1 - y0).max(0.5);
+    let pad = 0.06 * span;
+    let (mut x0, mut x1, mut y0, mut y1) = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+    let aspect = (width_px / height_px.max(1.0)).max(0.1);
+    let (width, height) = (x1 - x0, y1 - y0);
+    if width / height < aspect {
+        let extra = 0.5 * (height * aspect - width);
+        x0 -= extra;
+        x1 += extra;
+    } else {
+        let extra = 0.5 * (width / aspect - height);
+        y0 -= extra;
+        y1 += extra;
+    }
+    View { x0, x1, y0, y1 }
+}
+
+/// Clips a convex polygon to `view` (Sutherland-Hodgman).
+fn clip_polygon(polygon: &[(f64, f64)], view: &View) -> Vec<(f64, f64)> {
+    type Inside = fn(&View, (f64, f64)) -> bool;
+    type Cross = fn(&View, (f64, f64), (f64, f64)) -> (f64, f64);
+    let edges: [(Inside, Cross); 4] = [
+        (
+            |v, p| p.0 >= v.x0,
+            |v, a, b| {
+                let t = (v.x0 - a.0) / (b.0 - a.0);
+                (v.x0, a.1 + t * (b.1 - a.1))
+            },
+        ),
+        (
+            |v, p| p.0 <= v.x1,
+            |v, a, b| {
+                let t = (v.x1 - a.0) / (b.0 - a.0);
+                (v.x1, a.1 + t * (b.1 - a.1))
+            },
+        ),
+        (
+            |v, p| p.1 >= v.y0,
+            |v, a, b| {
+                let t = (v.y0 - a.1) / (b.1 - a.1);
+                (a.0 + t * (b.0 - a.0), v.y0)
+            },
+        ),
+        (
+            |v, p| p.1 <= v.y1,
+            |v, a, b| {
+                let t = (v.y1 - a.1) / (b.1 - a.1);
+                (a.0 + t * (b.0 - a.0), v.y1)
+            },
+        ),
+    ];
+    let mut output = polygon.to_vec();
+    for (inside, cross) in edges {
+        let input = std::mem::take(&mut output);
+        let Some(&last) = input.last() else {
+            break;
+        };
+        let mut previous = last;
+        for &point in &input {
+            match (inside(view, point), inside(view, previous)) {
+                (true, true) => output.push(point),
+                (true, false) => {
+                    output.push(cross(view, previous, point));
+                    output.push(point);
+                }
+                (false, true) => output.push(cross(view, previous, point)),
+                (false, false) => {}
+            }
+            previous = point;
+        }
+    }
+    output
+}
+
+/// Splits a polyline into the runs that lie below `y_max`, cutting segments
+/// at the line.
+fn clip_below(points: &[(f64, f64)], y_max: f64) -> Vec<Vec<(f64, f64)>> {
+    let mut runs = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for pair in points.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        let crossing = |a: (f64, f64), b: (f64, f64)| {
+            let t = (y_max - a.1) / (b.1 - a.1);
+            (a.0 + t * (b.0 - a.0), y_max)
+        };
+        match (a.1 <= y_max, b.1 <= y_max) {
+            (true, true) => {
+                if run.is_empty() {
+                    run.push(a);
+                }
+                run.push(b);
+            }
+            (true, false) => {
+                if run.is_empty() {
+                    run.push(a);
+                }
+                run.push(crossing(a, b));
+                runs.push(std::mem::take(&mut run));
+            }
+            (false, true) => {
+                run.push(crossing(a, b));
+                run.push(b);
+            }
+            (false, false) => {}
+        }
+    }
+    if points.len() == 1 && points[0].1 <= y_max {
+        run.push(points[0]);
+    }
+    if !run.is_empty() {
+        runs.push(run);
+    }
+    runs
+}
+
+/// Minutes between course markers: a round number giving about eight markers.
+fn marker_interval_min(duration_s: f64) -> f64 {
+    let wanted = duration_s / 60.0 / 8.0;
+    [1.0, 2.0, 5.0, 10.0, 15.0, 20.0, 30.0, 60.0, 120.0, 240.0]
+        .into_iter()
+        .find(|&step| step >= wanted)
+        .unwrap_or(480.0)
+}
+
+/// A triangle pointing along `course_rad`, in pixel offsets (y down).
+fn triangle(course_rad: f64, size: f64) -> Vec<(i32, i32)> {
+    let (dx, dy) = (course_rad.sin(), -course_rad.cos());
+    let (px, py) = (-dy, dx);
+    let point = |along: f64, side: f64| {
+        (
+            (along * dx + side * px).round() as i32,
+            (along * dy + side * py).round() as i32,
+        )
+    };
+    vec![
+        point(size, 0.0),
+        point(-0.6 * size, 0.6 * size),
+        point(-0.6 * size, -0.6 * size),
+    ]
+}
+
+fn circle_points(centre: (f64, f64), radius: f64) -> Vec<(f64, f64)> {
+    (0..=72)
+        .map(|i| {
+            let angle = f64::from(i) * std::f64::consts::TAU / 72.0;
+            (
+                centre.0 + radius * angle.cos(),
+                centre.1 + radius * angle.sin(),
+            )
+        })
+        .collect()
+}
+
+/// An axis tick: whole numbers without decimals, others with up to two.
+fn tick(value: &f64) -> String {
+    if value.abs() < 1e-9 {
+        "0".to_owned()
+    } else if (value - value.round()).abs() < 1e-6 {
+        format!("{value:.0}")
+    } else if (value * 10.0 - (value * 10.0).round()).abs() < 1e-6 {
+        format!("{value:.1}")
+    } else {
+        format!("{value:.2}")
+    }
+}
+
+fn format_distance(distance_m: f64) -> String {
+    if distance_m >= 10_000.0 {
+        format!("{:.1} km", distance_m / 1000.0)
+    } else {
+        format!("{distance_m:.0} m")
+    }
+}
+
+fn draw_trajectories<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    data: &PlotData<'_>,
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(to_text)?;
+    let (left, right) = root.split_horizontally(760);
+    let area = left
+        .margin(8, 0, 0, 0)
+        .titled(data.title, (FAMILY, 26).into_font().style(FontStyle::Bold))
+        .map_err(to_text)?;
+    let (margin, x_label, y_label) = (12u32, 45u32, 60u32);
+    let (width, height) = area.dim_in_pixel();
+    let plot_w = f64::from(width.saturating_sub(2 * margin + y_label));
+    let plot_h = f64::from(height.saturating_sub(2 * margin + x_label));
+    let vessels: Vec<&Track<'_>> = std::iter::once(&data.ownship)
+        .chain(data.targets.iter())
+        .collect();
+    let view = fit_view(
+        vessels
+            .iter()
+            .flat_map(|track| track.points_nm.iter().copied())
+            .chain(data.ownship.goal_nm),
+        plot_w,
+        plot_h,
+    );
+    let mut chart = ChartBuilder::on(&area)
+        .margin(margin)
+        .x_label_area_size(x_label)
+        .y_label_area_size(y_label)
+        .build_cartesian_2d(view.x0..view.x1, view.y0..view.y1)
+        .map_err(to_text)?;
+    chart
+        .configure_mesh()
+        .x_desc("east (nm)")
+        .y_desc("north (nm)")
+        .x_labels(10)
+        .y_labels(10)
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 16))
+        .bold_line_style(RGBColor(210, 210, 210))
+        .light_line_style(RGBColor(240, 240, 240))
+        .draw()
+        .map_err(to_text)?;
+
+    // Traffic lanes.
+    for lane in &data.lanes {
+        let clipped = clip_polygon(&lane.corners_nm, &view);
+        if clipped.len() < 3 {
+            continue;
+        }
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                clipped.clone(),
+                LANE_COLOUR.mix(0.15).filled(),
+            )))
+            .map_err(to_text)?;
+        let mut outline = clipped.clone();
+        outline.push(clipped[0]);
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                outline,
+                LANE_COLOUR.mix(0.6).stroke_width(1),
+            )))
+            .map_err(to_text)?;
+        let top = clipped
+            .iter()
+            .map(|p| p.1)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let label_at = (view.x0 + 0.02 * (view.x1 - view.x0), top);
+        let colour = LANE_COLOUR;
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at(label_at)
+                    + Text::new(
+                        format!("TSS lane {}, traffic {:03.0}°", lane.name, lane.course_deg),
+                        (0, 3),
+                        (FAMILY, 13).into_font().color(&colour),
+                    ),
+            ))
+            .map_err(to_text)?;
+    }
+
+    // The d_th circle around ownship at each closest approach.
+    let d_th_nm = data.d_th_m / METRES_PER_NM;
+    for target in &data.targets {
+        let Some(evaluation) = target.evaluation else {
+            continue;
+        };
+        let step = data.step_at(evaluation.time_of_min_s);
+        let Some(&own) = data.ownship.points_nm.get(step) else {
+            continue;
+        };
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                circle_points(own, d_th_nm),
+                target.colour.mix(0.08).filled(),
+            )))
+            .map_err(to_text)?;
+        chart
+            .draw_series(std::iter::once(PathElement::new(
+                circle_points(own, d_th_nm),
+                target.colour.mix(0.7).stroke_width(1),
+            )))
+            .map_err(to_text)?;
+    }
+
+    // Tracks: targets first, ownship on top.
+    for track in vessels.iter().rev() {
+        let width = if track.evaluation.is_none() { 3 } else { 2 };
+        chart
+            .draw_series(LineSeries::new(
+                track.points_nm.iter().copied(),
+                track.colour.stroke_width(width),
+            ))
+            .map_err(to_text)?;
+    }
+
+    // Course triangles every few minutes.
+    let interval_min = marker_interval_min(data.duration_s());
+    let mut marker_time_s = interval_min * 60.0;
+    while marker_time_s < data.duration_s() {
+        let step = data.step_at(marker_time_s);
+        for track in &vessels {
+            let (Some(&point), Some(&course)) =
+                (track.points_nm.get(step), track.courses_rad.get(step))
+            else {
+                continue;
+            };
+            let own = track.evaluation.is_none();
+            let size = if own { 9.0 } else { 7.0 };
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(point)
+                        + Polygon::new(triangle(course, size), track.colour.filled()),
+                ))
+                .map_err(to_text)?;
+            if own {
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at(point)
+                            + Text::new(
+                                format!("{:.0} min", marker_time_s / 60.0),
+                                (10, -6),
+                                (FAMILY, 12).into_font().color(&OWNSHIP_COLOUR),
+                            ),
+                    ))
+                    .map_err(to_text)?;
+            }
+        }
+        marker_time_s += interval_min * 60.0;
+    }
+
+    // Start dots and goal crosses.
+    for track in &vessels {
+        let colour = track.colour;
+        if let Some(&start) = track.points_nm.first() {
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(start)
+                        + Circle::new((0, 0), 5, colour.filled())
+                        + Text::new(
+                            track.name.to_owned(),
+                            (8, 4),
+                            (FAMILY, 14).into_font().color(&colour),
+                        ),
+                ))
+                .map_err(to_text)?;
+        }
+        if let Some(goal) = track.goal_nm.filter(|goal| view.contains(*goal)) {
+            let own = track.evaluation.is_none();
+            let (size, width) = if own { (8, 3) } else { (5, 2) };
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(goal) + Cross::new((0, 0), size, colour.stroke_width(width)),
+                ))
+                .map_err(to_text)?;
+            if own {
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at(goal)
+                            + Text::new(
+                                "goal".to_owned(),
+                                (10, -6),
+                                (FAMILY, 14).into_font().color(&colour),
+                            ),
+                    ))
+                    .map_err(to_text)?;
+            }
+        }
+    }
+
+    // Closest approaches: the two positions joined, the distance written.
+    for target in &data.targets {
+        let Some(evaluation) = target.evaluation else {
+            continue;
+        };
+        let step = data.step_at(evaluation.time_of_min_s);
+        let (Some(&own), Some(&other)) =
+            (data.ownship.points_nm.get(step), target.points_nm.get(step))
+        else {
+            continue;
+        };
+        let colour = target.colour;
+        chart
+            .draw_series(DashedLineSeries::new(
+                vec![own, other],
+                5,
+                4,
+                colour.stroke_width(2),
+            ))
+            .map_err(to_text)?;
+        chart
+            .draw_series(
+                [own, other]
+                    .into_iter()
+                    .map(|point| Circle::new(point, 4, colour.stroke_width(2))),
+            )
+            .map_err(to_text)?;
+        let middle = (0.5 * (own.0 + other.0), 0.5 * (own.1 + other.1));
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at(middle)
+                    + Text::new(
+                        format!(
+                            "{} {}",
+                            target.name,
+                            format_distance(evaluation.min_distance_m)
+                        ),
+                        (6, -16),
+                        (FAMILY, 13).into_font().color(&colour),
+                    ),
+            ))
+            .map_err(to_text)?;
+    }
+
+    draw_legend(&right, data, interval_min)
+}
+
+fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    data: &PlotData<'_>,
+    interval_min: f64,
+) -> Result<(), String> {
+    let black = RGBColor(0, 0, 0);
+    let grey = RGBColor(90, 90, 90);
+    let (width, height) = area.dim_in_pixel();
+    let bottom = i32::try_from(height).unwrap_or(i32::MAX) - 150;
+    let x = 8;
+    let mut y = 60;
+    area.draw(&Text::new(
+        "Legend",
+        (x, y),
+        (FAMILY, 18).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    y += 28;
+    let vessels: Vec<&Track<'_>> = std::iter::once(&data.ownship)
+        .chain(data.targets.iter())
+        .collect();
+    let two_lines = vessels.len() <= 16;
+    let line_height = if two_lines { 34 } else { 18 };
+    for (shown, track) in vessels.iter().enumerate() {
+        if y + line_height > bottom {
+            let rest = vessels.len() - shown;
+            area.draw(&Text::new(
+                format!("... and {rest} more"),
+                (x, y),
+                (FAMILY, 13).into_font().color(&grey),
+            ))
+            .map_err(to_text)?;
+            break;
+        }
+        let own = track.evaluation.is_none();
+        area.draw(&PathElement::new(
+            vec![(x, y + 7), (x + 28, y + 7)],
+            track.colour.stroke_width(if own { 3 } else { 2 }),
+        ))
+        .map_err(to_text)?;
+        let headline = match track.evaluation {
+            Some(evaluation) => format!("{}  {}", track.name, evaluation.encounter),
+            None if track.name == "ownship" => "ownship".to_owned(),
+            None => format!("{} (ownship)", track.name),
+        };
+        area.draw(&Text::new(
+            headline,
+            (x + 36, y),
+            (FAMILY, 14).into_font().color(&black),
+        ))
+        .map_err(to_text)?;
+        if two_lines && let Some(evaluation) = track.evaluation {
+            let verdict = if evaluation.compliant {
+                "ok"
+            } else {
+                "violation"
+            };
+            area.draw(&Text::new(
+                format!(
+                    "min {} at {:.1} min, {verdict}",
+                    format_distance(evaluation.min_distance_m),
+                    evaluation.time_of_min_s / 60.0
+                ),
+                (x + 36, y + 16),
+                (FAMILY, 12).into_font().color(&grey),
+            ))
+            .map_err(to_text)?;
+        }
+        y += line_height;
+    }
+    // Key to the symbols, at the bottom.
+    let mut y = bottom + 10;
+    let step = 22;
+    let symbol_x = x + 14;
+    area.draw(&(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 5, black.filled())))
+        .map_err(to_text)?;
+    area.draw(&Text::new(
+        "start",
+        (x + 36, y),
+        (FAMILY, 13).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    y += step;
+    area.draw(
+        &(EmptyElement::at((symbol_x, y + 7))
+            + Polygon::new(triangle(std::f64::consts::FRAC_PI_2, 8.0), black.filled())),
+    )
+    .map_err(to_text)?;
+    area.draw(&Text::new(
+        format!("course, every {interval_min:.0} min"),
+        (x + 36, y),
+        (FAMILY, 13).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    y += step;
+    area.draw(
+        &(EmptyElement::at((symbol_x, y + 7)) + Cross::new((0, 0), 6, black.stroke_width(2))),
+    )
+    .map_err(to_text)?;
+    area.draw(&Text::new(
+        "goal",
+        (x + 36, y),
+        (FAMILY, 13).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    y += step;
+    area.draw(&PathElement::new(
+        vec![(x, y + 7), (x + 8, y + 7)],
+        black.stroke_width(2),
+    ))
+    .map_err(to_text)?;
+    area.draw(&PathElement::new(
+        vec![(x + 13, y + 7), (x + 21, y + 7)],
+        black.stroke_width(2),
+    ))
+    .map_err(to_text)?;
+    area.draw(&Text::new(
+        "closest approach",
+        (x + 36, y),
+        (FAMILY, 13).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    y += step;
+    area.draw(
+        &(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 8, grey.stroke_width(1))),
+    )
+    .map_err(to_text)?;
+    area.draw(&Text::new(
+        format!("d_th = {:.0} m around ownship", data.d_th_m),
+        (x + 36, y),
+        (FAMILY, 13).into_font().color(&black),
+    ))
+    .map_err(to_text)?;
+    if !data.lanes.is_empty() {
+        y += step;
+        area.draw(&Rectangle::new(
+            [(x, y), (x + 28, y + 14)],
+            LANE_COLOUR.mix(0.3).filled(),
+        ))
+        .map_err(to_text)?;
+        area.draw(&Text::new(
+            "traffic lane (TSS)",
+            (x + 36, y),
+            (FAMILY, 13).into_font().color(&black),
+        ))
+        .map_err(to_text)?;
+    }
+    let _ = width;
+    Ok(())
+}
+
+fn draw_distance<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    data: &PlotData<'_>,
+) -> Result<(), String> {
+    root.fill(&WHITE).map_err(to_text)?;
+    let minutes: Vec<f64> = data.times_s.iter().map(|t| t / 60.0).collect();
+    let series: Vec<Vec<(f64, f64)>> = data
+        .targets
+        .iter()
+        .map(|target| {
+            target
+                .points_nm
+                .iter()
+                .zip(&data.ownship.points_nm)
+                .zip(&minutes)
+                .map(|((other, own), minute)| {
+                    let distance_m = METRES_PER_NM * (other.0 - own.0).hypot(other.1 - own.1);
+                    (*minute, distance_m)
+                })
+                .collect()
+        })
+        .collect();
+    let largest = series.iter().flatten().map(|p| p.1).fold(0.0_f64, f64::max);
+    let largest_min = data
+        .targets
+        .iter()
+        .filter_map(|target| target.evaluation.map(|e| e.min_distance_m))
+        .fold(0.0_f64, f64::max);
+    let y_max = (largest.min((5.0 * data.d_th_m).max(2.0 * largest_min)) * 1.1)
+        .max(1.5 * data.d_th_m)
+        .max(1.0);
+    let x_max = minutes.last().copied().unwrap_or(0.0).max(1.0);
+    let mut chart = ChartBuilder::on(root)
+        .caption(
+            format!("{}: distance from ownship to each target", data.title),
+            (FAMILY, 24).into_font().style(FontStyle::Bold),
+        )
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..x_max, 0.0..y_max)
+        .map_err(to_text)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (min)")
+        .y_desc("distance (m)")
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 16))
+        .bold_line_style(RGBColor(210, 210, 210))
+        .light_line_style(RGBColor(240, 240, 240))
+        .draw()
+        .map_err(to_text)?;
+    let clearance = CLEARANCE_COLOUR;
+    chart
+        .draw_series(DashedLineSeries::new(
+            vec![(0.0, data.d_th_m), (x_max, data.d_th_m)],
+            8,
+            5,
+            clearance.stroke_width(2),
+        ))
+        .map_err(to_text)?
+        .label(format!("d_th = {:.0} m", data.d_th_m))
+        .legend(move |(x, y)| {
+            PathElement::new(vec![(x, y), (x + 20, y)], clearance.stroke_width(2))
+        });
+    chart
+        .draw_series(std::iter::once(Text::new(
+            format!("d_th = {:.0} m", data.d_th_m),
+            (0.01 * x_max, data.d_th_m + 0.015 * y_max),
+            (FAMILY, 13).into_font().color(&clearance),
+        )))
+        .map_err(to_text)?;
+    for (index, (target, points)) in data.targets.iter().zip(&series).enumerate() {
+        let colour = target.colour;
+        let runs = clip_below(points, y_max);
+        for (run_index, run) in runs.into_iter().enumerate() {
+            let drawn = chart
+                .draw_series(LineSeries::new(run, colour.stroke_width(2)))
+                .map_err(to_text)?;
+            if run_index == 0 {
+                drawn.label(target.name.to_owned()).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
+            }
+        }
+        if let Some(evaluation) = target.evaluation {
+            let point = (evaluation.time_of_min_s / 60.0, evaluation.min_distance_m);
+            if point.1 <= y_max {
+                // Alternate the label above and below to keep neighbours apart.
+                let dy = if index % 2 == 0 { -22 } else { 8 };
+                chart
+                    .draw_series(std::iter::once(
+                        EmptyElement::at(point)
+                            + Circle::new((0, 0), 5, colour.filled())
+                            + Text::new(
+                                format!(
+                                    "{} {} at {:.1} min",
+                                    target.name,
+                                    format_distance(evaluation.min_distance_m),
+                                    point.0
+                                ),
+                                (7, dy),
+                                (FAMILY, 13).into_font().color(&colour),
+                            ),
+                    ))
+                    .map_err(to_text)?;
+            }
+        }
+    }
+    if data.targets.is_empty() {
+        chart
+            .draw_series(std::iter::once(Text::new(
+                "no targets".to_owned(),
+                (0.45 * x_max, 0.5 * y_max),
+                (FAMILY, 18).into_font(),
+            )))
+            .map_err(to_text)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(RGBColor(160, 160, 160))
+        .label_font((FAMILY, 13))
+        .draw()
+        .map_err(to_text)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn view_keeps_aspect_and_points() {
+        let view = fit_view(
+            [(0.0, -3.0), (0.0, 3.0), (3.0, 0.0)].into_iter(),
+            800.0,
+            600.0,
+        );
+        assert!(((view.x1 - view.x0) / (view.y1 - view.y0) - 800.0 / 600.0).abs() < 1e-9);
+        assert!(view.contains((0.0, -3.0)) && view.contains((3.0, 0.0)));
+    }
+
+    #[test]
+    fn polygon_clipped_to_view() {
+        let view = View {
+            x0: -1.0,
+            x1: 1.0,
+            y0: -1.0,
+            y1: 1.0,
+        };
+        let lane = [(-8.0, 0.5), (8.0, 0.5), (8.0, -0.5), (-8.0, -0.5)];
+        let clipped = clip_polygon(&lane, &view);
+        assert!(
+            clipped
+                .iter()
+                .all(|p| p.0.abs() <= 1.0 && p.1.abs() <= 0.5 + 1e-12)
+        );
+        assert_eq!(clipped.len(), 4);
+    }
+
+    #[test]
+    fn polyline_cut_at_top() {
+        let runs = clip_below(&[(0.0, 0.0), (1.0, 2.0), (2.0, 0.0)], 1.0);
+        assert_eq!(runs.len(), 2);
+        assert_eq!(runs[0], vec![(0.0, 0.0), (0.5, 1.0)]);
+        assert_eq!(runs[1], vec![(1.5, 1.0), (2.0, 0.0)]);
+    }
+
+    #[test]
+    fn marker_interval_is_round() {
+        assert_eq!(marker_interval_min(30.0 * 60.0), 5.0);
+        assert_eq!(marker_interval_min(60.0), 1.0);
+    }
+}

@@ -1,0 +1,292 @@
+//! The command line's JSON outputs: `report.json` of a run ([`Report`]) and
+//! the plan printed by `vorrt plan` ([`PlanOutput`]).
+//!
+//! These structs are the schema, documented field by field in
+//! `docs/report-format.md`; they are filled from the library's types but do
+//! not expose them, so that the files stay stable when the library changes.
+//! Distances are metres, times seconds, angles degrees clockwise from north,
+//! positions `east`/`north` metres in the scenario's frame.
+
+use serde::{Deserialize, Serialize};
+use vorrt_planner::{Plan, PlanStatistics, RejectionCounts};
+use vorrt_scenarios::{Evaluation, Scenario, SimulationRecord, TargetEvaluation};
+
+/// The version of the report and plan schemas; raised on any incompatible change.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// `report.json`: how one closed-loop run fared.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Report {
+    /// Schema version, [`FORMAT_VERSION`].
+    pub format_version: u32,
+    /// The scenario's name.
+    pub scenario: String,
+    /// The scenario file the run was made from.
+    pub scenario_file: String,
+    /// The planner seed of the run.
+    pub seed: u64,
+    /// The clearance `d_th` the run is judged against, metres.
+    pub d_th_m: f64,
+    /// Whether ownship reached its goal.
+    pub reached_goal: bool,
+    /// When it did, seconds (`null` if it did not).
+    pub arrival_time_s: Option<f64>,
+    /// Whether any two hulls touched (centres closer than half the two lengths added).
+    pub collision: bool,
+    /// Smallest distance from ownship to any target, metres (`null` with no targets).
+    pub min_distance_m: Option<f64>,
+    /// Whether every target stayed at least `d_th_m` away.
+    pub clearance_kept: bool,
+    /// Whether ownship obeyed COLREGs in every encounter.
+    pub compliant: bool,
+    /// `reached_goal && !collision && clearance_kept`: the run succeeded
+    /// (exit code 0 of `vorrt simulate`).
+    pub reached_goal_safely: bool,
+    /// Planner calls during the run.
+    pub planning: PlanningReport,
+    /// Length of ownship's sailed track, metres.
+    pub path_length_m: f64,
+    /// Straight-line distance from ownship's start to its goal, metres.
+    pub straight_length_m: f64,
+    /// Extra length over the straight route, percent.
+    pub path_overhead_pct: f64,
+    /// Time to the goal (or to the end of the run), seconds.
+    pub duration_s: f64,
+    /// Extra time over the straight route at ownship's speed, percent.
+    pub time_overhead_pct: f64,
+    /// The simulation time step, seconds.
+    pub time_step_s: f64,
+    /// Per target, in scenario order.
+    pub targets: Vec<TargetReport>,
+}
+
+/// Planner calls of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PlanningReport {
+    /// Calls that returned a plan.
+    pub plans_made: usize,
+    /// Calls after the first (successful or not).
+    pub replans: usize,
+    /// Calls that found no plan.
+    pub failed_plans: usize,
+    /// Wall-clock time spent in the planner over the run, seconds.
+    pub total_planning_time_s: f64,
+}
+
+/// How ownship fared against one target.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TargetReport {
+    /// The target's name.
+    pub name: String,
+    /// The encounter when risk of collision first arose: `head_on`,
+    /// `crossing_give_way`, `crossing_stand_on`, `overtaking`,
+    /// `being_overtaken`, or `none` if risk never arose.
+    pub encounter: String,
+    /// Ownship's role: `give_way`, `stand_on` or `none`.
+    pub role: String,
+    /// When risk of collision first arose, seconds (`null` if never).
+    pub risk_time_s: Option<f64>,
+    /// Smallest distance between ownship and the target, metres.
+    pub min_distance_m: f64,
+    /// When it occurred, seconds.
+    pub time_of_min_s: f64,
+    /// Whether the minimum distance kept `d_th`.
+    pub clearance_kept: bool,
+    /// Whether the hulls touched.
+    pub collision: bool,
+    /// Whether ownship's action obeyed every rule that applied.
+    pub compliant: bool,
+    /// Every rule broken and clearance finding, as text naming the rule.
+    pub violations: Vec<String>,
+    /// Overall score in `[0, 1]`: safety times every applicable rule score.
+    pub score: f64,
+}
+
+impl Report {
+    /// The report of a run of `scenario` recorded in `record` and judged in `evaluation`.
+    #[must_use]
+    pub fn new(scenario: &Scenario, record: &SimulationRecord, evaluation: &Evaluation) -> Self {
+        let reached_goal_safely =
+            evaluation.reached_goal && !evaluation.collision && evaluation.clearance_kept;
+        Self {
+            format_version: FORMAT_VERSION,
+            scenario: evaluation.scenario.clone(),
+            scenario_file: scenario.source.clone(),
+            seed: evaluation.seed,
+            d_th_m: evaluation.clearance_m,
+            reached_goal: evaluation.reached_goal,
+            arrival_time_s: record.arrival_time_s,
+            collision: evaluation.collision,
+            min_distance_m: evaluation
+                .min_distance_m
+                .is_finite()
+                .then_some(evaluation.min_distance_m),
+            clearance_kept: evaluation.clearance_kept,
+            compliant: evaluation.compliant,
+            reached_goal_safely,
+            planning: PlanningReport {
+                plans_made: evaluation.plans_made,
+                replans: evaluation.replans,
+                failed_plans: evaluation.failed_plans,
+                total_planning_time_s: evaluation.planning_time_s,
+            },
+            path_length_m: evaluation.path_length_m,
+            straight_length_m: evaluation.straight_length_m,
+            path_overhead_pct: evaluation.path_overhead_pct,
+            duration_s: evaluation.duration_s,
+            time_overhead_pct: evaluation.time_overhead_pct,
+            time_step_s: record.time_step_s,
+            targets: evaluation.targets.iter().map(TargetReport::new).collect(),
+        }
+    }
+}
+
+impl TargetReport {
+    /// The report of one target's evaluation.
+    #[must_use]
+    pub fn new(target: &TargetEvaluation) -> Self {
+        Self {
+            name: target.name.clone(),
+            encounter: target.encounter.name().to_owned(),
+            role: target.role.name().to_owned(),
+            risk_time_s: target.risk_time_s,
+            min_distance_m: target.min_distance_m,
+            time_of_min_s: target.time_of_min_s,
+            clearance_kept: target.clearance_kept,
+            collision: target.collision,
+            compliant: target.compliant,
+            violations: target.violations.clone(),
+            score: target.score,
+        }
+    }
+}
+
+/// What `vorrt plan` prints: one plan from the start state.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlanOutput {
+    /// Schema version, [`FORMAT_VERSION`].
+    pub format_version: u32,
+    /// The scenario's name.
+    pub scenario: String,
+    /// The scenario file.
+    pub scenario_file: String,
+    /// The planner seed.
+    pub seed: u64,
+    /// The clearance `d_th`, metres.
+    pub d_th_m: f64,
+    /// Path length, metres.
+    pub length_m: f64,
+    /// Time from the first to the last waypoint, seconds.
+    pub duration_s: f64,
+    /// From ownship's start (first) to its goal (last).
+    pub waypoints: Vec<WaypointOutput>,
+    /// What the search did.
+    pub statistics: StatisticsOutput,
+}
+
+/// One waypoint of a plan.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct WaypointOutput {
+    /// When ownship is here, seconds from the start.
+    pub time_s: f64,
+    /// Position east, metres.
+    pub east_m: f64,
+    /// Position north, metres.
+    pub north_m: f64,
+    /// Course on the leg that ends here (the start course at the first
+    /// waypoint), degrees clockwise from north in `[0, 360)`.
+    pub course_deg: f64,
+}
+
+/// Search statistics of one planner call.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct StatisticsOutput {
+    /// Nodes in the tree that produced the plan.
+    pub nodes: u64,
+    /// Samples drawn, accepted or not, over all restarts.
+    pub samples: u64,
+    /// Times the tree was grown again from the root.
+    pub restarts: u64,
+    /// Wall-clock planning time, seconds.
+    pub planning_time_s: f64,
+    /// Rejected samples by cause.
+    pub rejections: RejectionsOutput,
+}
+
+/// Rejected samples by cause.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RejectionsOutput {
+    /// In a target's velocity obstacle.
+    pub velocity_obstacle: u64,
+    /// A target within `d_th` during the segment.
+    pub clearance: u64,
+    /// A target in an encounter in force within `d_th` after the segment.
+    pub clearance_ahead: u64,
+    /// A turn to port (rules 14, 15).
+    pub port_turn: u64,
+    /// Passing starboard to starboard head-on (rule 14).
+    pub starboard_passing: u64,
+    /// Crossing ahead of a stand-on vessel (rule 15).
+    pub crossing_ahead: u64,
+    /// A course change while standing on (rule 17(a)(i)).
+    pub stand_on_course_change: u64,
+    /// A speed change while standing on (rule 17(a)(i)).
+    pub stand_on_speed_change: u64,
+    /// A port turn for a vessel on the port side (rule 17(c)).
+    pub port_turn_for_port_vessel: u64,
+}
+
+impl From<&RejectionCounts> for RejectionsOutput {
+    fn from(counts: &RejectionCounts) -> Self {
+        Self {
+            velocity_obstacle: counts.velocity_obstacle,
+            clearance: counts.clearance,
+            clearance_ahead: counts.clearance_ahead,
+            port_turn: counts.port_turn,
+            starboard_passing: counts.starboard_passing,
+            crossing_ahead: counts.crossing_ahead,
+            stand_on_course_change: counts.stand_on_course_change,
+            stand_on_speed_change: counts.stand_on_speed_change,
+            port_turn_for_port_vessel: counts.port_turn_for_port_vessel,
+        }
+    }
+}
+
+impl From<&PlanStatistics> for StatisticsOutput {
+    fn from(statistics: &PlanStatistics) -> Self {
+        Self {
+            nodes: statistics.nodes,
+            samples: statistics.samples,
+            restarts: statistics.restarts,
+            planning_time_s: statistics.elapsed_s,
+            rejections: RejectionsOutput::from(&statistics.rejections),
+        }
+    }
+}
+
+impl PlanOutput {
+    /// The output for `plan`, planned for `scenario` with `seed`.
+    #[must_use]
+    pub fn new(scenario: &Scenario, seed: u64, d_th_m: f64, plan: &Plan) -> Self {
+        Self {
+            format_version: FORMAT_VERSION,
+            scenario: scenario.name.clone(),
+            scenario_file: scenario.source.clone(),
+            seed,
+            d_th_m,
+            length_m: plan.length_m(),
+            duration_s: plan.duration_s(),
+            waypoints: plan
+                .waypoints
+                .iter()
+                .map(|waypoint| WaypointOutput {
+                    time_s: waypoint.time_s,
+                    east_m: waypoint.position_m.x,
+                    north_m: waypoint.position_m.y,
+                    course_deg: waypoint.course_rad.to_degrees().rem_euclid(360.0),
+                })
+                .collect(),
+            statistics: StatisticsOutput::from(&plan.statistics),
+        }
+    }
+}
