@@ -18,6 +18,7 @@
 //! | [`io`] | [`Scenario::from_ron_str`], [`Scenario::load`], [`Scenario::to_ron_string`], [`load_dir`] |
 //! | [`simulation`] | [`simulate`]: the closed loop — ownship follows its plan and replans when it stops being valid; every trajectory recorded |
 //! | [`generator`] | seeded Monte Carlo scenarios: [`OpenSeaSpec`] (targets on near-collision courses in a chosen mix of encounter types) and [`TssSpec`] (crossing a traffic lane at a chosen density), one random stream per scenario index |
+//! | [`batch`] | Monte Carlo batches: [`run_batch`] in parallel (rayon), one [`BatchRow`] per scenario, [`BatchSummary`] (rates, per-rule compliance, percentiles), CSV rows, deterministic [`Shard`]s and merging |
 //! | [`evaluation`] | [`evaluate`]: goal reached, minimum distance per target, COLREGs compliance with violations named, per-rule scores, path overhead |
 //! | [`error`] | [`ScenarioError`] |
 //!
@@ -42,6 +43,7 @@
 //! ```
 #![forbid(missing_docs)]
 
+pub mod batch;
 pub mod convert;
 pub mod error;
 pub mod evaluation;
@@ -52,6 +54,7 @@ pub mod scenario;
 pub mod simulation;
 pub mod validate;
 
+pub use batch::{BatchError, BatchItem, BatchRow, BatchSummary, Shard, run_batch};
 pub use error::ScenarioError;
 pub use evaluation::{Evaluation, TargetEvaluation, evaluate, evaluate_with, scoring_for};
 pub use generator::{
