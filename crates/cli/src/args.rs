@@ -1,4 +1,8 @@
 //! The command line: subcommands, options and help texts (clap derive).
+//!
+//! The doc comments here are the `--help` texts, written for a terminal:
+//! placeholders like `<scenario name>` are not HTML.
+#![allow(rustdoc::invalid_html_tags)]
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
