@@ -93,4 +93,21 @@ pub enum Command {
         #[arg(long, value_name = "NAME")]
         only: Vec<String>,
     },
+    /// Run a Monte Carlo batch: generated scenarios or a folder of files.
+    ///
+    /// Runs every scenario in closed loop in parallel and writes DIR/rows.csv
+    /// (one row per scenario), DIR/summary.json (rates, compliance per rule,
+    /// percentiles), DIR/run.json, DIR/min_distance.svg, DIR/planning_time.svg
+    /// and DIR/failures/*.ron. Exits 0 once the batch has run, whatever its
+    /// results. See docs/evaluation.md.
+    #[command(after_help = EXIT_CODES)]
+    Batch(crate::batch::BatchArgs),
+    /// Write generated scenarios as .ron files (the ones `batch --generate`
+    /// would run with the same options).
+    #[command(after_help = EXIT_CODES)]
+    Generate(crate::batch::GenerateArgs),
+    /// Merge the outputs of several batch shards into one rows.csv,
+    /// summary.json and plots.
+    #[command(after_help = EXIT_CODES)]
+    Merge(crate::batch::MergeArgs),
 }

@@ -96,6 +96,9 @@ pub fn run(cli: Cli) -> Result<ExitStatus, CliError> {
             fixtures,
             only,
         }),
+        Command::Batch(args) => crate::batch::batch_command(&args),
+        Command::Generate(args) => crate::batch::generate_command(&args),
+        Command::Merge(args) => crate::batch::merge_command(&args),
     }
 }
 

@@ -11,6 +11,7 @@
 //! | [`report`] | the stable `report.json` and `plan` output schemas (see `docs/report-format.md`) |
 //! | [`plot`] | trajectory and distance plots, SVG and PNG |
 //! | [`demo`] | every bundled scenario in parallel, and `index.html` |
+//! | [`batch`] | Monte Carlo campaigns: `batch`, `generate`, `merge`, histograms |
 //! | [`font`] | the bundled DejaVu Sans font for PNG text |
 //!
 //! [`main_entry`] is the whole program: the workspace root package's `vorrt`
@@ -21,6 +22,7 @@
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
 pub mod args;
+pub mod batch;
 pub mod commands;
 pub mod demo;
 pub mod font;

@@ -1,0 +1,189 @@
+//! End-to-end tests of `vorrt batch`, `vorrt generate` and `vorrt merge`.
+
+use std::path::Path;
+use std::process::{Command, Output};
+use vorrt_scenarios::batch::{BatchSummary, read_csv};
+
+fn vorrt(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_vorrt-cli"))
+        .args(args)
+        .output()
+        .expect("the vorrt binary runs")
+}
+
+fn ok(output: &Output) {
+    assert!(
+        output.status.success(),
+        "stdout: {}\nstderr: {}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+fn path_str(path: &Path) -> &str {
+    path.to_str().expect("test paths are UTF-8")
+}
+
+fn summary(dir: &Path) -> BatchSummary {
+    let text = std::fs::read_to_string(dir.join("summary.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+#[test]
+fn sharded_batch_merges_into_the_unsharded_one() {
+    let temp = tempfile::tempdir().unwrap();
+    let out = |name: &str| temp.path().join(name);
+    let common = [
+        "batch",
+        "--generate",
+        "open-sea",
+        "--targets",
+        "2",
+        "--count",
+        "5",
+        "--seed",
+        "9",
+        "--jobs",
+        "1",
+    ];
+    let run = |extra: &[&str], dir: &Path| {
+        let mut args: Vec<&str> = common.to_vec();
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&["--out", path_str(dir)]);
+        ok(&vorrt(&args));
+    };
+    run(&[], &out("whole"));
+    run(&["--shard", "0/2"], &out("s0"));
+    run(&["--shard", "1/2"], &out("s1"));
+    for file in [
+        "rows.csv",
+        "summary.json",
+        "run.json",
+        "min_distance.svg",
+        "planning_time.svg",
+    ] {
+        assert!(out("whole").join(file).is_file(), "{file}");
+    }
+    let output = vorrt(&[
+        "merge",
+        path_str(&out("s0")),
+        path_str(&out("s1")),
+        "--out",
+        path_str(&out("merged")),
+    ]);
+    ok(&output);
+    let whole = read_csv(&out("whole").join("rows.csv")).unwrap();
+    let merged = read_csv(&out("merged").join("rows.csv")).unwrap();
+    assert_eq!(whole.len(), 5);
+    assert_eq!(
+        read_csv(&out("s0").join("rows.csv")).unwrap().len(),
+        3,
+        "indices 0, 2, 4"
+    );
+    for (a, b) in whole.iter().zip(&merged) {
+        assert_eq!(a.index, b.index);
+        assert_eq!(a.name, b.name);
+        assert_eq!(a.seed, b.seed);
+        assert_eq!(a.min_distance_m.to_bits(), b.min_distance_m.to_bits());
+        assert_eq!(a.replans, b.replans);
+    }
+    let (mut a, b) = (summary(&out("whole")), summary(&out("merged")));
+    assert_eq!(a.count, 5);
+    // Wall-clock times differ between runs; everything else is equal.
+    a.planning_time_ms = b.planning_time_ms;
+    a.planning_time_per_plan_ms = b.planning_time_per_plan_ms;
+    assert_eq!(a, b);
+}
+
+#[test]
+fn generate_writes_the_scenarios_batch_runs() {
+    let temp = tempfile::tempdir().unwrap();
+    let files = temp.path().join("files");
+    ok(&vorrt(&[
+        "generate",
+        "tss",
+        "--density",
+        "1",
+        "--direction",
+        "two-way",
+        "--count",
+        "2",
+        "--seed",
+        "4",
+        "--out",
+        path_str(&files),
+    ]));
+    let written: Vec<_> = std::fs::read_dir(&files).unwrap().collect();
+    assert_eq!(written.len(), 2);
+    // Checked by `vorrt check`, and run from the folder with the same seeds
+    // as a generated batch.
+    let from_dir = temp.path().join("from-dir");
+    ok(&vorrt(&[
+        "batch",
+        "--dir",
+        path_str(&files),
+        "--out",
+        path_str(&from_dir),
+    ]));
+    let generated = temp.path().join("generated");
+    ok(&vorrt(&[
+        "batch",
+        "--generate",
+        "tss",
+        "--density",
+        "1",
+        "--direction",
+        "two-way",
+        "--count",
+        "2",
+        "--seed",
+        "4",
+        "--out",
+        path_str(&generated),
+    ]));
+    let a = read_csv(&from_dir.join("rows.csv")).unwrap();
+    let b = read_csv(&generated.join("rows.csv")).unwrap();
+    for (a, b) in a.iter().zip(&b) {
+        assert_eq!((&a.name, a.seed, a.replans), (&b.name, b.seed, b.replans));
+        assert_eq!(a.min_distance_m.to_bits(), b.min_distance_m.to_bits());
+    }
+}
+
+#[test]
+fn bad_batch_options_exit_2() {
+    let temp = tempfile::tempdir().unwrap();
+    let out = path_str(temp.path());
+    for args in [
+        vec!["batch", "--generate", "open-sea", "--out", out],
+        vec![
+            "batch",
+            "--generate",
+            "open-sea",
+            "--targets",
+            "65",
+            "--out",
+            out,
+        ],
+        vec!["batch", "--generate", "tss", "--targets", "3", "--out", out],
+        vec![
+            "batch",
+            "--generate",
+            "open-sea",
+            "--targets",
+            "2",
+            "--shard",
+            "2/2",
+            "--out",
+            out,
+        ],
+        vec!["batch", "--out", out],
+        vec!["merge", "/nonexistent/shard", "--out", out],
+    ] {
+        let output = vorrt(&args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains("error"),
+            "{args:?}"
+        );
+    }
+}
