@@ -85,8 +85,8 @@ pub enum Command {
         #[arg(long, value_name = "N")]
         seed: Option<u64>,
         /// Scenario folder: its *.ron files and those of its immediate
-        /// subfolders, one group per folder [default: the bundled fixtures/,
-        /// holding paper/ and imazu/].
+        /// subfolders, one group per folder [default: paper/ and imazu/ of the
+        /// bundled fixtures/].
         #[arg(long, value_name = "DIR")]
         fixtures: Option<PathBuf>,
         /// Run only the scenarios with this name or file stem (repeatable).

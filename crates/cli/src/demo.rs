@@ -83,6 +83,26 @@ fn load_group(dir: &Path, group: &str) -> Result<Vec<Entry>, CliError> {
         .collect())
 }
 
+/// The groups of the bundled fixtures that `demo` runs by default; other
+/// folders there (golden results and the like) hold no scenarios.
+pub const BUNDLED_GROUPS: [&str; 2] = ["paper", "imazu"];
+
+/// The bundled scenarios: [`BUNDLED_GROUPS`] of `dir`.
+fn collect_bundled(dir: &Path) -> Result<Vec<Entry>, CliError> {
+    let mut entries = Vec::new();
+    for group in BUNDLED_GROUPS {
+        let subdir = dir.join(group);
+        if !subdir.is_dir() {
+            return Err(CliError::BadInput(format!(
+                "bundled scenario folder {} does not exist (give one with --fixtures DIR)",
+                subdir.display()
+            )));
+        }
+        entries.extend(load_group(&subdir, group)?);
+    }
+    Ok(entries)
+}
+
 /// The scenarios of `dir`: its own `*.ron` files, then those of each
 /// immediate subfolder in name order, one group per folder.
 fn collect(dir: &Path) -> Result<Vec<Entry>, CliError> {
@@ -113,11 +133,14 @@ fn collect(dir: &Path) -> Result<Vec<Entry>, CliError> {
 /// invalid file, or `--only` matches nothing; [`CliError::Output`] when the
 /// page cannot be written.
 pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
-    let fixtures = options
-        .fixtures
-        .clone()
-        .unwrap_or_else(default_fixtures_dir);
-    let mut entries = collect(&fixtures)?;
+    let (fixtures, mut entries) = match &options.fixtures {
+        Some(dir) => (dir.clone(), collect(dir)?),
+        None => {
+            let dir = default_fixtures_dir();
+            let entries = collect_bundled(&dir)?;
+            (std::fs::canonicalize(&dir).unwrap_or(dir), entries)
+        }
+    };
     if !options.only.is_empty() {
         let known: Vec<String> = entries.iter().map(|entry| entry.stem.clone()).collect();
         entries.retain(|entry| {
@@ -317,7 +340,7 @@ fn index_html(outcomes: &[Outcome], fixtures: &Path) -> String {
                     "<tr><td>{link}</td><td>{}</td><td class=\"num\">{}</td>{}{}\
                      <td class=\"num\">{}</td><td class=\"num\">{:.0}</td>{}{}\
                      <td class=\"num\">{:.1} %</td><td class=\"num\">{} / {} / {}</td>\
-                     <td class=\"num\">{:.2}</td><td><a href=\"{}\">json</a></td></tr>",
+                     <td class=\"num\">{:.3}</td><td><a href=\"{}\">json</a></td></tr>",
                     escape(&entry.group),
                     report.targets.len(),
                     verdict(report.reached_goal, "yes", "no"),

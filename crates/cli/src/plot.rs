@@ -394,6 +394,33 @@ fn circle_points(centre: (f64, f64), radius: f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Most closest approaches labelled in a plot; with more targets only the
+/// closest ones are labelled (all are marked).
+const MAX_LABELS: usize = 6;
+
+/// Whether each target's closest approach gets a label: the [`MAX_LABELS`]
+/// closest ones.
+fn labelled(targets: &[Track<'_>]) -> Vec<bool> {
+    let mut order: Vec<(usize, f64)> = targets
+        .iter()
+        .enumerate()
+        .map(|(index, target)| {
+            (
+                index,
+                target
+                    .evaluation
+                    .map_or(f64::INFINITY, |e| e.min_distance_m),
+            )
+        })
+        .collect();
+    order.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let mut chosen = vec![false; targets.len()];
+    for (index, _) in order.into_iter().take(MAX_LABELS) {
+        chosen[index] = true;
+    }
+    chosen
+}
+
 /// An axis tick: whole numbers without decimals, others with up to two.
 fn tick(value: &f64) -> String {
     if value.abs() < 1e-9 {
@@ -609,7 +636,8 @@ fn draw_trajectories<DB: DrawingBackend>(
     }
 
     // Closest approaches: the two positions joined, the distance written.
-    for target in &data.targets {
+    let labels = labelled(&data.targets);
+    for (target, label) in data.targets.iter().zip(labels) {
         let Some(evaluation) = target.evaluation else {
             continue;
         };
@@ -635,6 +663,9 @@ fn draw_trajectories<DB: DrawingBackend>(
                     .map(|point| Circle::new(point, 4, colour.stroke_width(2))),
             )
             .map_err(to_text)?;
+        if !label {
+            continue;
+        }
         let middle = (0.5 * (own.0 + other.0), 0.5 * (own.1 + other.1));
         chart
             .draw_series(std::iter::once(
@@ -880,6 +911,7 @@ fn draw_distance<DB: DrawingBackend>(
             (FAMILY, 13).into_font().color(&clearance),
         )))
         .map_err(to_text)?;
+    let labels = labelled(&data.targets);
     for (index, (target, points)) in data.targets.iter().zip(&series).enumerate() {
         let colour = target.colour;
         let runs = clip_below(points, y_max);
@@ -896,12 +928,16 @@ fn draw_distance<DB: DrawingBackend>(
         if let Some(evaluation) = target.evaluation {
             let point = (evaluation.time_of_min_s / 60.0, evaluation.min_distance_m);
             if point.1 <= y_max {
+                chart
+                    .draw_series(std::iter::once(Circle::new(point, 5, colour.filled())))
+                    .map_err(to_text)?;
+            }
+            if point.1 <= y_max && labels[index] {
                 // Alternate the label above and below to keep neighbours apart.
                 let dy = if index % 2 == 0 { -22 } else { 8 };
                 chart
                     .draw_series(std::iter::once(
                         EmptyElement::at(point)
-                            + Circle::new((0, 0), 5, colour.filled())
                             + Text::new(
                                 format!(
                                     "{} {} at {:.1} min",
