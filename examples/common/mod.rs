@@ -7,7 +7,7 @@ use vorrt::scenarios::{Scenario, bundled_fixtures_dir, evaluate, simulate};
 /// Runs the bundled fixture `relative` (under `fixtures/`) with its own seed
 /// and prints the evaluation table. Exit code 0 when ownship reached its goal
 /// with the clearance kept, 1 otherwise, 2 for a fixture that does not load.
-pub fn run_fixture(relative: &str) -> ExitCode {
+pub(crate) fn run_fixture(relative: &str) -> ExitCode {
     let path = bundled_fixtures_dir().join(relative);
     let scenario = match Scenario::load(&path) {
         Ok(scenario) => scenario,
