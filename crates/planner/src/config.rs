@@ -98,6 +98,10 @@ pub const MAX_NODES_PER_PHASE: usize = 100_000;
 /// The most samples per phase the planner accepts as configuration.
 pub const MAX_SAMPLES_PER_PHASE: usize = 10_000_000;
 
+/// The largest length (metres) or time (seconds) a configuration may give:
+/// keeps every distance, time and area the planner computes finite.
+pub const MAX_LENGTH_OR_TIME: f64 = 1e8;
+
 /// The most restarts the planner accepts as configuration.
 pub const MAX_RESTARTS: usize = 1_000;
 
@@ -121,15 +125,15 @@ impl PlannerConfig {
             ("lookahead_s", self.lookahead_s),
         ];
         for (field, value) in positive {
-            if !(value.is_finite() && value > 0.0) {
-                return invalid(field, value, "a finite number greater than 0");
+            if !(value.is_finite() && value > 0.0 && value <= MAX_LENGTH_OR_TIME) {
+                return invalid(field, value, "a number greater than 0 and at most 1e8");
             }
         }
-        if !(self.sampling_margin_m.is_finite() && self.sampling_margin_m >= 0.0) {
+        if !(self.sampling_margin_m >= 0.0 && self.sampling_margin_m <= MAX_LENGTH_OR_TIME) {
             return invalid(
                 "sampling_margin_m",
                 self.sampling_margin_m,
-                "a finite number of at least 0",
+                "a number from 0 to 1e8",
             );
         }
         for (field, value) in [

@@ -9,6 +9,22 @@ use vorrt_jfs::TargetState;
 /// Largest number of targets one problem may hold: bounds the per-node memory.
 pub const MAX_TARGETS: usize = 1024;
 
+/// The slowest ownship the planner accepts, m/s (about 0.002 kn): slower,
+/// the time of one step overflows to infinity and node positions become NaN.
+pub const MIN_OWNSHIP_SPEED_MPS: f64 = 1e-3;
+
+/// Positions and goals must lie within this distance of the origin, metres,
+/// and speeds, lengths and the start time under the bounds below: keeps every
+/// distance, time and area the planner computes finite (an overflow to
+/// infinity turns into NaN, which the R*-tree cannot order).
+pub const MAX_EXTENT_M: f64 = 1e8;
+/// The fastest vessel a problem may hold, m/s.
+pub const MAX_SPEED_MPS: f64 = 1e3;
+/// The longest vessel a problem may hold, metres.
+pub const MAX_LENGTH_M: f64 = 1e5;
+/// The largest start time a problem may have, in magnitude, seconds.
+pub const MAX_START_TIME_S: f64 = 1e12;
+
 /// Everything the planner needs to know about the world at planning time.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PlanningProblem {
@@ -53,15 +69,21 @@ impl PlanningProblem {
         if !self.start_time_s.is_finite() {
             return bad("start_time_s".into(), "is not finite");
         }
+        if self.start_time_s.abs() > MAX_START_TIME_S {
+            return bad("start_time_s".into(), "is more than 1e12 s from 0");
+        }
         check_vessel("ownship", &self.ownship)?;
-        if self.ownship.speed_mps <= 0.0 {
+        if self.ownship.speed_mps < MIN_OWNSHIP_SPEED_MPS {
             return bad(
                 "ownship.speed_mps".into(),
-                "must be greater than 0 for ownship to move",
+                "must be at least 0.001 m/s for ownship to move",
             );
         }
         if !self.goal_m.is_finite() {
             return bad("goal_m".into(), "is not finite");
+        }
+        if self.goal_m.length() > MAX_EXTENT_M {
+            return bad("goal_m".into(), "is more than 1e8 m from the origin");
         }
         if self.targets.len() > MAX_TARGETS {
             return bad("targets".into(), "holds more than 1024 vessels");
@@ -70,6 +92,15 @@ impl PlanningProblem {
             check_vessel(&format!("targets[{index}]"), &target.vessel)?;
             if target.goal_m.is_some_and(|goal| !goal.is_finite()) {
                 return bad(format!("targets[{index}].goal_m"), "is not finite");
+            }
+            if target
+                .goal_m
+                .is_some_and(|goal| goal.length() > MAX_EXTENT_M)
+            {
+                return bad(
+                    format!("targets[{index}].goal_m"),
+                    "is more than 1e8 m from the origin",
+                );
             }
         }
         if !self.encounters.is_empty() && self.encounters.len() != self.targets.len() {
@@ -98,16 +129,34 @@ fn check_vessel(name: &str, vessel: &VesselState) -> Result<(), PlannerError> {
             });
         }
     }
+    if vessel.position_m.length() > MAX_EXTENT_M {
+        return Err(PlannerError::InvalidProblem {
+            field: format!("{name}.position_m"),
+            problem: "is more than 1e8 m from the origin".into(),
+        });
+    }
     if vessel.speed_mps < 0.0 {
         return Err(PlannerError::InvalidProblem {
             field: format!("{name}.speed_mps"),
             problem: "is negative".into(),
         });
     }
+    if vessel.speed_mps > MAX_SPEED_MPS {
+        return Err(PlannerError::InvalidProblem {
+            field: format!("{name}.speed_mps"),
+            problem: "is more than 1000 m/s".into(),
+        });
+    }
     if vessel.length_m <= 0.0 {
         return Err(PlannerError::InvalidProblem {
             field: format!("{name}.length_m"),
             problem: "must be greater than 0".into(),
+        });
+    }
+    if vessel.length_m > MAX_LENGTH_M {
+        return Err(PlannerError::InvalidProblem {
+            field: format!("{name}.length_m"),
+            problem: "is more than 1e5 m".into(),
         });
     }
     Ok(())

@@ -292,11 +292,11 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
 
 fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
     let who = Who::Ownship;
-    if ownship.speed_kn <= 0.0 {
+    if ownship.speed_mps() < vorrt_planner::problem::MIN_OWNSHIP_SPEED_MPS {
         return Err((
             who.field("speed_kn"),
             format!(
-                "is {}, ownship must move (speed greater than 0)",
+                "is {}, ownship must move (speed greater than 0, at least 0.002 kn)",
                 ownship.speed_kn
             ),
         ));
