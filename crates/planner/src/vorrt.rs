@@ -6,7 +6,7 @@
 //! extended (for a goal sample, the nearest node that faces the goal within
 //! one bounded turn, when there is one) by the joint forward step (ownship `d'` toward the sample, turn
 //! bounded by `max_turn_per_step_rad`; every target for the same time) and the
-//! move is kept when [`SafetyChecker`](crate::safety::SafetyChecker) accepts
+//! move is kept when [`SafetyChecker`] accepts
 //! it. A phase ends after `nodes_per_phase` accepted nodes or
 //! `samples_per_phase` samples (erratum 4). A node within `goal_tolerance_m` of
 //! the goal tries a final, checked segment onto it; success returns the branch.
