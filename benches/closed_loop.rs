@@ -9,7 +9,7 @@
 
 mod support;
 
-use criterion::{Criterion, black_box, criterion_group, criterion_main};
+use criterion::{Criterion, SamplingMode, black_box, criterion_group, criterion_main};
 use std::time::Duration;
 use support::{SEED, fixture};
 use vorrt::scenarios::{Scenario, simulate};
@@ -22,8 +22,12 @@ fn imazu_all() -> Vec<Scenario> {
 
 fn closed_loop(c: &mut Criterion) {
     let mut group = c.benchmark_group("closed_loop");
+    // One iteration of imazu_all takes a few hundred milliseconds: ten
+    // samples of equal size (flat sampling) in 15 s.
     group.sample_size(10);
-    group.measurement_time(Duration::from_secs(10));
+    group.sampling_mode(SamplingMode::Flat);
+    group.warm_up_time(Duration::from_secs(2));
+    group.measurement_time(Duration::from_secs(15));
 
     let imazu = imazu_all();
     let reached = imazu
@@ -55,6 +59,7 @@ fn closed_loop(c: &mut Criterion) {
             record.failed_plans()
         );
     }
+    group.measurement_time(Duration::from_secs(5));
     group.bench_function("tss", |b| {
         b.iter(|| {
             simulate(black_box(&tss), black_box(SEED))

@@ -10,6 +10,7 @@
 
 use criterion::{Criterion, black_box, criterion_group, criterion_main};
 use glam::DVec2;
+use std::time::Duration;
 use vorrt::colregs::{
     Encounter, EncounterLatch, RuleParameters, VesselState, check_maneuver, classify,
 };
@@ -209,11 +210,16 @@ fn bench_prediction(c: &mut Criterion) {
     });
 }
 
-criterion_group!(
-    benches,
-    bench_cpa,
-    bench_velocity_obstacle,
-    bench_colregs,
-    bench_prediction
-);
+fn config() -> Criterion {
+    // Each iteration is well under a microsecond: short runs suffice.
+    Criterion::default()
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2))
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = bench_cpa, bench_velocity_obstacle, bench_colregs, bench_prediction
+}
 criterion_main!(benches);

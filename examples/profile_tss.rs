@@ -6,8 +6,10 @@
 //! valgrind --tool=callgrind target/release/examples/profile_tss 20
 //! ```
 //!
-//! The argument is how many plans (default 20), each with the fixture's
-//! planner settings and seeds 1, 2, 3, ... in turn.
+//! The first argument is how many plans (default 20), each with the
+//! fixture's planner settings. A second argument fixes the seed of every
+//! plan (as `plan/tss` does, with seed 1); without it the seeds are 1, 2, 3,
+//! ... in turn.
 
 use std::path::Path;
 use std::process::ExitCode;
@@ -15,11 +17,17 @@ use vorrt::planner::Planner;
 use vorrt::scenarios::Scenario;
 
 fn main() -> ExitCode {
-    let runs: u64 = match std::env::args().nth(1).map(|arg| arg.parse()) {
-        None => 20,
-        Some(Ok(runs)) => runs,
-        Some(Err(error)) => {
-            eprintln!("the number of plans must be a whole number: {error}");
+    let number = |index: usize| -> Result<Option<u64>, String> {
+        std::env::args()
+            .nth(index)
+            .map(|arg| arg.parse::<u64>())
+            .transpose()
+            .map_err(|error| format!("arguments must be whole numbers: {error}"))
+    };
+    let (runs, fixed_seed) = match (number(1), number(2)) {
+        (Ok(runs), Ok(seed)) => (runs.unwrap_or(20), seed),
+        (Err(error), _) | (_, Err(error)) => {
+            eprintln!("{error}");
             return ExitCode::FAILURE;
         }
     };
@@ -41,13 +49,14 @@ fn main() -> ExitCode {
     let problem = scenario.planning_problem();
     let mut planner = Planner::new(config).expect("the fixture's settings are valid");
     let (mut planned, mut samples) = (0u64, 0u64);
-    for seed in 1..=runs {
+    for run in 1..=runs {
+        let seed = fixed_seed.unwrap_or(run);
         match planner.plan(&problem, seed) {
             Ok(plan) => {
                 planned += 1;
                 samples += plan.statistics.samples;
             }
-            Err(error) => eprintln!("seed {seed}: {error}"),
+            Err(error) => eprintln!("run {run}, seed {seed}: {error}"),
         }
     }
     eprintln!("{planned} of {runs} plans found, {samples} samples in those");
