@@ -3,7 +3,7 @@
 
 Reads every target/criterion/**/new/{benchmark,estimates}.json, prints a
 Markdown table (median, median absolute deviation, 95 % confidence interval
-of the median, mean) in the order the benchmarks ran, and writes the
+of the median, mean) in a fixed order of suites, and writes the
 plan-time-against-targets plot as a hand-written SVG.
 
     python3 scripts/bench_report.py [CRITERION_DIR] [SVG_PATH]
@@ -35,10 +35,30 @@ def load(root):
             benchmark = json.load(f)
         with open(os.path.join(directory, "estimates.json")) as f:
             estimates = json.load(f)
-        mtime = os.path.getmtime(os.path.join(directory, "estimates.json"))
-        results.append((mtime, benchmark["full_id"], estimates))
+        results.append((order(benchmark["full_id"]), benchmark["full_id"], estimates))
     results.sort()
     return [(full_id, estimates) for _, full_id, estimates in results]
+
+
+GROUPS = [
+    "geometry/",
+    "colregs/",
+    "jfs/",
+    "plan/",
+    "plan_scaling/targets/",
+    "plan_scaling/nodes_per_phase/",
+    "nearest_index/",
+    "closed_loop/",
+]
+
+
+def order(full_id):
+    """Suites in the order they are documented; numbers in numeric order."""
+    group = next(
+        (i for i, prefix in enumerate(GROUPS) if full_id.startswith(prefix)), len(GROUPS)
+    )
+    parts = [int(part) if part.isdigit() else part for part in full_id.split("/")]
+    return (group, [(0, part, "") if isinstance(part, int) else (1, 0, part) for part in parts])
 
 
 def table(results):
