@@ -15,7 +15,7 @@
 //! | [`latch`] | [`EncounterLatch`], [`update_latch`], [`has_passed`]: keep an encounter's type until the vessels have passed |
 //! | [`passing`] | [`passing_side`], [`crosses_ahead`]: how ownship passes a target |
 //! | [`compliance`] | [`assess_encounter`]: post-hoc scoring of one recorded encounter (safety, rules 13-17), [`ScoringParameters`] |
-//! | [`maneuver`] | [`check_maneuver`]: whether a candidate velocity obeys rules 14-17 in an encounter in force |
+//! | [`maneuver`] | [`check_maneuver`]: whether a candidate velocity obeys rules 14-17 in an encounter in force; [`check_alteration`]: rule 16's readily apparent alteration |
 //! | [`error`] | [`ColregsError`] |
 //!
 //! ## Example
@@ -48,12 +48,14 @@ pub mod vessel;
 
 pub use compliance::{
     ComplianceViolation, EncounterAssessment, EncounterSample, PenaltyWeights, RuleScores,
-    ScoringParameters, assess_encounter, first_latch, safety_score,
+    ScoringParameters, assess_encounter, assess_encounter_acting, first_latch, safety_score,
 };
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
 pub use latch::{EncounterLatch, has_passed, update_latch};
-pub use maneuver::{ManeuverViolation, check_maneuver, check_maneuver_acting, stand_on_may_act};
+pub use maneuver::{
+    ManeuverViolation, check_alteration, check_maneuver, check_maneuver_acting, stand_on_may_act,
+};
 pub use parameters::RuleParameters;
 pub use passing::{PassingSide, crosses_ahead, passing_side};
 pub use risk::{RiskAssessment, assess_risk};

@@ -44,17 +44,20 @@ pub enum ManeuverViolation {
     StandOnSpeedChange,
     /// A stand-on vessel turned to port for a vessel on its own port side (rule 17(c)).
     PortTurnForPortVessel,
+    /// A give-way alteration too small to be readily apparent (rules 8(b), 16).
+    InsufficientAlteration,
 }
 
 impl ManeuverViolation {
     /// Every violation, in a fixed order.
-    pub const ALL: [ManeuverViolation; 6] = [
+    pub const ALL: [ManeuverViolation; 7] = [
         ManeuverViolation::PortTurn,
         ManeuverViolation::StarboardPassing,
         ManeuverViolation::CrossingAhead,
         ManeuverViolation::StandOnCourseChange,
         ManeuverViolation::StandOnSpeedChange,
         ManeuverViolation::PortTurnForPortVessel,
+        ManeuverViolation::InsufficientAlteration,
     ];
 
     /// The rule broken, as text.
@@ -76,6 +79,9 @@ impl ManeuverViolation {
             }
             ManeuverViolation::PortTurnForPortVessel => {
                 "stand-on vessel turned to port for a vessel on its port side (rule 17(c))"
+            }
+            ManeuverViolation::InsufficientAlteration => {
+                "give-way alteration too small to be readily apparent (rules 8(b), 16)"
             }
         }
     }
@@ -220,6 +226,53 @@ pub fn check_maneuver_acting(
         }
         Encounter::Overtaking | Encounter::None => Ok(()),
     }
+}
+
+/// Rules 8(b) and 16: a give-way vessel's alteration of course must be large
+/// enough to be readily apparent to the other vessel
+/// ([`apparent_turn_rad`](RuleParameters::apparent_turn_rad), 30° by default);
+/// a succession of small alterations is to be avoided.
+///
+/// `altered_rad` is the largest alteration from the latch's reference course
+/// already made while the encounter has been in force. Until it reaches the
+/// apparent size, a candidate course that alters at all (by more than
+/// [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)) must alter by
+/// at least that much. Stand-on encounters are not concerned.
+///
+/// ```
+/// use vorrt_colregs::{check_alteration, EncounterLatch, Encounter, ManeuverViolation, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let latch = EncounterLatch::new(Encounter::HeadOn, &own, 0.0);
+/// assert_eq!(check_alteration(&latch, 0.0, 0.0, &params), Ok(()));                  // holding course
+/// assert_eq!(check_alteration(&latch, 0.0, 35f64.to_radians(), &params), Ok(()));    // substantial
+/// assert_eq!(
+///     check_alteration(&latch, 0.0, 10f64.to_radians(), &params),
+///     Err(ManeuverViolation::InsufficientAlteration)
+/// );
+/// // Once 35° has been made, easing back to 10° is allowed.
+/// assert_eq!(check_alteration(&latch, 35f64.to_radians(), 10f64.to_radians(), &params), Ok(()));
+/// ```
+///
+/// # Errors
+/// [`ManeuverViolation::InsufficientAlteration`].
+pub fn check_alteration(
+    latch: &EncounterLatch,
+    altered_rad: f64,
+    course_rad: f64,
+    parameters: &RuleParameters,
+) -> Result<(), ManeuverViolation> {
+    if latch.encounter.role() != crate::encounter::Role::GiveWay
+        || altered_rad >= parameters.apparent_turn_rad
+    {
+        return Ok(());
+    }
+    let turn = angle::signed_turn(latch.reference_course_rad, course_rad).abs();
+    if turn > parameters.turn_tolerance_rad && turn < parameters.apparent_turn_rad {
+        return Err(ManeuverViolation::InsufficientAlteration);
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -70,6 +70,8 @@ pub struct RejectionCounts {
     pub stand_on_speed_change: u64,
     /// Rejected for a port turn for a vessel on the port side (rule 17(c)).
     pub port_turn_for_port_vessel: u64,
+    /// Rejected for a give-way alteration too small to be apparent (rules 8(b), 16).
+    pub insufficient_alteration: u64,
 }
 
 impl RejectionCounts {
@@ -97,12 +99,15 @@ impl RejectionCounts {
             RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel) => {
                 &mut self.port_turn_for_port_vessel
             }
+            RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration) => {
+                &mut self.insufficient_alteration
+            }
         }
     }
 
     /// Every cause with its count, in a fixed order.
     #[must_use]
-    pub fn by_cause(&self) -> [(RejectionCause, u64); 9] {
+    pub fn by_cause(&self) -> [(RejectionCause, u64); 10] {
         [
             (RejectionCause::VelocityObstacle, self.velocity_obstacle),
             (RejectionCause::Clearance, self.clearance),
@@ -130,6 +135,10 @@ impl RejectionCounts {
             (
                 RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel),
                 self.port_turn_for_port_vessel,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration),
+                self.insufficient_alteration,
             ),
         ]
     }

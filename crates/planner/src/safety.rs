@@ -11,7 +11,10 @@
 //! 3. **clearance ahead** — for every target within MTD, `d_th` also holds
 //!    if ownship kept the new velocity after the segment, for up to
 //!    `lookahead_s` or until it would reach its goal;
-//! 4. **COLREGs** — for every encounter in force, `vorrt_colregs::check_maneuver`.
+//! 4. **COLREGs** — for every encounter in force, `vorrt_colregs::check_maneuver`,
+//!    and for a give-way vessel `vorrt_colregs::check_alteration`: until the
+//!    branch has altered course by a readily apparent amount (30°), any
+//!    alteration must be at least that large (rules 8(b), 16).
 //!
 //! A stand-on vessel whose give-way vessel is still beyond the stand-on action
 //! range keeps its course (rule 17(a)(i)), so for that target checks 1 and 3
@@ -23,7 +26,9 @@
 use crate::config::PlannerConfig;
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::{EncounterLatch, Role, check_maneuver_acting, stand_on_may_act};
+use vorrt_colregs::{
+    EncounterLatch, Role, check_alteration, check_maneuver_acting, stand_on_may_act,
+};
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
 use vorrt_jfs::LinearTrack;
@@ -99,6 +104,7 @@ impl SafetyChecker<'_> {
         &self,
         candidate: &Move,
         latches: &[Option<EncounterLatch>],
+        alterations: &[f64],
     ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
         let clearance = self.config.clearance_m;
@@ -163,6 +169,9 @@ impl SafetyChecker<'_> {
                     acting,
                 )
                 .map_err(RejectionCause::Colregs)?;
+                let altered = alterations.get(index).copied().unwrap_or(0.0);
+                check_alteration(&latch, altered, candidate.course_rad, rules)
+                    .map_err(RejectionCause::Colregs)?;
             }
         }
         Ok(())

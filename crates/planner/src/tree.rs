@@ -29,6 +29,10 @@ pub struct Tree {
     pub parents: Vec<u32>,
     /// Encounters in force at each node: `latches[node * targets + target]`.
     pub latches: Vec<Option<EncounterLatch>>,
+    /// For each encounter in force (same layout), the largest alteration of
+    /// course from its reference made on the branch since it began, radians
+    /// (rule 16: readily apparent).
+    pub alterations: Vec<f64>,
     targets: usize,
     index: NearestIndex,
     rtree: RTree<IndexedPoint>,
@@ -43,12 +47,14 @@ impl Tree {
         self.times.clear();
         self.parents.clear();
         self.latches.clear();
+        self.alterations.clear();
         self.positions.reserve(capacity);
         self.courses.reserve(capacity);
         self.headings.reserve(capacity);
         self.times.reserve(capacity);
         self.parents.reserve(capacity);
         self.latches.reserve(capacity * targets);
+        self.alterations.reserve(capacity * targets);
         self.targets = targets;
         self.index = index;
         self.rtree = RTree::new();
@@ -66,7 +72,8 @@ impl Tree {
         self.positions.is_empty()
     }
 
-    /// Adds a node and returns its index; `latches` holds one entry per target.
+    /// Adds a node and returns its index; `latches` and `alterations` hold
+    /// one entry per target.
     pub fn push(
         &mut self,
         position_m: DVec2,
@@ -74,8 +81,10 @@ impl Tree {
         time_s: f64,
         parent: u32,
         latches: &[Option<EncounterLatch>],
+        alterations: &[f64],
     ) -> u32 {
         debug_assert_eq!(latches.len(), self.targets);
+        debug_assert_eq!(alterations.len(), self.targets);
         let index = self.positions.len() as u32;
         self.positions.push(position_m);
         self.courses.push(course_rad);
@@ -84,6 +93,7 @@ impl Tree {
         self.times.push(time_s);
         self.parents.push(parent);
         self.latches.extend_from_slice(latches);
+        self.alterations.extend_from_slice(alterations);
         if self.index == NearestIndex::RTree {
             self.rtree
                 .insert(IndexedPoint::new([position_m.x, position_m.y], index));
@@ -96,6 +106,13 @@ impl Tree {
     pub fn latches_of(&self, node: u32) -> &[Option<EncounterLatch>] {
         let start = node as usize * self.targets;
         &self.latches[start..start + self.targets]
+    }
+
+    /// The alterations made for the encounters in force at `node`.
+    #[must_use]
+    pub fn alterations_of(&self, node: u32) -> &[f64] {
+        let start = node as usize * self.targets;
+        &self.alterations[start..start + self.targets]
     }
 
     /// The node nearest to `point_m` (Algorithm 2, `getClosestNode`); ties go
@@ -195,8 +212,8 @@ mod tests {
         indexed.reset(64, 0, NearestIndex::RTree);
         for i in 0..50u32 {
             let position = DVec2::new(f64::from(i * 37 % 101), f64::from(i * 53 % 97));
-            linear.push(position, 0.0, 0.0, 0, &[]);
-            indexed.push(position, 0.0, 0.0, 0, &[]);
+            linear.push(position, 0.0, 0.0, 0, &[], &[]);
+            indexed.push(position, 0.0, 0.0, 0, &[], &[]);
         }
         for probe in [
             DVec2::new(3.3, 7.1),
@@ -218,8 +235,15 @@ mod tests {
             let mut tree = Tree::default();
             tree.reset(4, 0, index);
             // Nearest to the point, but heading south, away from it.
-            tree.push(DVec2::new(0.0, 90.0), std::f64::consts::PI, 0.0, 0, &[]);
-            tree.push(DVec2::new(0.0, 50.0), 0.0, 0.0, 0, &[]);
+            tree.push(
+                DVec2::new(0.0, 90.0),
+                std::f64::consts::PI,
+                0.0,
+                0,
+                &[],
+                &[],
+            );
+            tree.push(DVec2::new(0.0, 50.0), 0.0, 0.0, 0, &[], &[]);
             let point = DVec2::new(0.0, 100.0);
             assert_eq!(tree.nearest(point), Some(0));
             assert_eq!(tree.nearest_facing(point, 0.5), Some(1));
@@ -232,9 +256,9 @@ mod tests {
     fn branch_runs_root_first() {
         let mut tree = Tree::default();
         tree.reset(4, 0, NearestIndex::Linear);
-        tree.push(DVec2::ZERO, 0.0, 0.0, 0, &[]);
-        tree.push(DVec2::X, 0.0, 1.0, 0, &[]);
-        tree.push(DVec2::Y, 0.0, 2.0, 1, &[]);
+        tree.push(DVec2::ZERO, 0.0, 0.0, 0, &[], &[]);
+        tree.push(DVec2::X, 0.0, 1.0, 0, &[], &[]);
+        tree.push(DVec2::Y, 0.0, 2.0, 1, &[], &[]);
         assert_eq!(tree.branch(2), vec![0, 1, 2]);
     }
 }

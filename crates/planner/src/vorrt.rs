@@ -59,6 +59,7 @@ pub struct Planner {
     tree: Tree,
     tracks: Vec<LinearTrack>,
     latch_scratch: Vec<Option<EncounterLatch>>,
+    alteration_scratch: Vec<f64>,
 }
 
 enum Growth {
@@ -78,6 +79,7 @@ impl Planner {
             tree: Tree::default(),
             tracks: Vec::new(),
             latch_scratch: Vec::new(),
+            alteration_scratch: Vec::new(),
         })
     }
 
@@ -141,6 +143,7 @@ impl Planner {
                 problem.start_time_s,
                 0,
                 &root_latches,
+                &vec![0.0; targets],
             );
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
@@ -230,13 +233,18 @@ impl Planner {
             let Some(candidate) = candidate else {
                 continue;
             };
-            if let Err(cause) = checker.check(&candidate, self.tree.latches_of(parent)) {
+            if let Err(cause) = checker.check(
+                &candidate,
+                self.tree.latches_of(parent),
+                self.tree.alterations_of(parent),
+            ) {
                 statistics.rejections.record(cause);
                 continue;
             }
             let node = add_node(
                 &mut self.tree,
                 &mut self.latch_scratch,
+                &mut self.alteration_scratch,
                 &self.tracks,
                 &own,
                 parent,
@@ -260,11 +268,16 @@ impl Planner {
                     velocity_mps: offset / to_goal * own.speed_mps,
                     duration_s: to_goal / own.speed_mps,
                 };
-                match checker.check(&final_move, self.tree.latches_of(node)) {
+                match checker.check(
+                    &final_move,
+                    self.tree.latches_of(node),
+                    self.tree.alterations_of(node),
+                ) {
                     Ok(()) => {
                         let goal = add_node(
                             &mut self.tree,
                             &mut self.latch_scratch,
+                            &mut self.alteration_scratch,
                             &self.tracks,
                             &own,
                             node,
@@ -352,11 +365,13 @@ fn steer(
     })
 }
 
-/// Adds the node a checked move ends in, updating each target's encounter latch.
+/// Adds the node a checked move ends in, updating each target's encounter
+/// latch and the alteration made for it (rule 16).
 #[allow(clippy::too_many_arguments)]
 fn add_node(
     tree: &mut Tree,
     scratch: &mut Vec<Option<EncounterLatch>>,
+    alterations: &mut Vec<f64>,
     tracks: &[LinearTrack],
     own: &VesselState,
     parent: u32,
@@ -374,14 +389,29 @@ fn add_node(
     };
     scratch.clear();
     scratch.extend_from_slice(tree.latches_of(parent));
-    for (latch, track) in scratch.iter_mut().zip(tracks) {
+    alterations.clear();
+    alterations.extend_from_slice(tree.alterations_of(parent));
+    for ((latch, altered), track) in scratch.iter_mut().zip(alterations.iter_mut()).zip(tracks) {
+        let before = *latch;
         *latch = update_latch(
-            *latch,
+            before,
             &own_then,
             &track.state_at(end_elapsed_s),
             time_s,
             &config.rules,
         );
+        *altered = match (*latch, before) {
+            (Some(now), Some(was)) if now == was => altered
+                .max(angle::signed_turn(now.reference_course_rad, candidate.course_rad).abs()),
+            _ => 0.0,
+        };
     }
-    tree.push(end_m, candidate.course_rad, time_s, parent, scratch)
+    tree.push(
+        end_m,
+        candidate.course_rad,
+        time_s,
+        parent,
+        scratch,
+        alterations,
+    )
 }
