@@ -729,6 +729,32 @@ pub fn assess_encounter(
     rules: &RuleParameters,
     scoring: &ScoringParameters,
 ) -> EncounterAssessment {
+    assess_encounter_acting(samples, latch, rules, scoring, &[])
+}
+
+/// As [`assess_encounter`], for a stand-on ownship that also had to give way
+/// to other vessels: `giving_way[i]` says whether it did at `samples[i]`
+/// (missing entries count as `false`). With several targets, rule 17 yields
+/// to the duty to keep out of the way (the planner reads it the same way), so
+/// while it gives way an early course or speed change is not held against
+/// it; rule 17(c) still is.
+#[must_use]
+pub fn assess_encounter_acting(
+    samples: &[EncounterSample],
+    latch: &EncounterLatch,
+    rules: &RuleParameters,
+    scoring: &ScoringParameters,
+    giving_way: &[bool],
+) -> EncounterAssessment {
+    let acting_at: std::collections::HashSet<u64> = samples
+        .iter()
+        .zip(giving_way)
+        .filter(|(_, giving)| **giving)
+        .map(|(sample, _)| sample.time_s.to_bits())
+        .collect();
+    let may_act = |s: &EncounterSample| {
+        s.range_m() <= rules.stand_on_action_range_m || acting_at.contains(&s.time_s.to_bits())
+    };
     let encounter = latch.encounter;
     let role = encounter.role();
     let weights = &scoring.penalties;
@@ -744,10 +770,23 @@ pub fn assess_encounter(
         .iter()
         .position(|s| s.time_s >= latch.latched_at_s - 1e-9)
         .unwrap_or(samples.len());
-    let passed_index = samples[start..]
-        .iter()
-        .position(|s| has_passed(&s.own, &s.target, encounter, rules))
-        .map(|offset| start + offset);
+    // Passed is judged on the course ownship was steering when it got there
+    // (the previous sample's course and speed): a turn made once the vessels
+    // have passed is not a manoeuvre for this encounter, as a bridge officer
+    // resumes course only after judging the other vessel passed. The planner
+    // judges it the same way, at each node on the course that led there.
+    let passed_index = (start..samples.len()).find(|&index| {
+        let sample = &samples[index];
+        let steering = index
+            .checked_sub(1)
+            .map_or(&sample.own, |previous| &samples[previous].own);
+        let own = VesselState {
+            course_rad: steering.course_rad,
+            speed_mps: steering.speed_mps,
+            ..sample.own
+        };
+        has_passed(&own, &sample.target, encounter, rules)
+    });
     let end = passed_index.unwrap_or(samples.len());
     let in_force = &samples[start..end];
     let segment_end = (end + 1).min(samples.len());
@@ -889,11 +928,7 @@ pub fn assess_encounter(
             // Rule 17(a)(i): keep course and speed while the range is beyond
             // the action range.
             let mut penalties = Vec::new();
-            let early = || {
-                in_force
-                    .iter()
-                    .filter(|s| s.range_m() > rules.stand_on_action_range_m)
-            };
+            let early = || in_force.iter().filter(|s| !may_act(s));
             let early_turn = largest_signed(early().map(turn_of));
             let early_speed = largest_signed(early().map(speed_change_of));
             if early_turn.abs() > rules.stand_on_course_tolerance_rad {
@@ -908,11 +943,23 @@ pub fn assess_encounter(
                 });
                 penalties.push(weights.stand_on_speed_change);
             }
-            // Rule 17(c): in a crossing, no port turn for a vessel on the port side.
+            // Rule 17(c): in a crossing, a vessel that acts does not alter
+            // course to port (of the course held when the encounter began) for
+            // a vessel on its port side. Only a newly taken course counts, and
+            // before the stand-on vessel may act (17(a)(ii)) only one beyond
+            // the stand-on tolerance: drift within it is not action, nor is
+            // holding such a course into the action range.
             if encounter == Encounter::CrossingStandOn {
                 let port_turn = in_force
                     .iter()
-                    .find(|s| turn_of(s) < -rules.turn_tolerance_rad);
+                    .zip(std::iter::once(None).chain(in_force.iter().map(Some)))
+                    .find(|(s, previous)| {
+                        let altered = previous.is_none_or(|p| p.own.course_rad != s.own.course_rad);
+                        let acting =
+                            may_act(s) || turn_of(s).abs() > rules.stand_on_course_tolerance_rad;
+                        altered && acting && turn_of(s) < -rules.turn_tolerance_rad
+                    })
+                    .map(|(s, _)| s);
                 if let Some(s) = port_turn {
                     let bearing = angle::relative_bearing(
                         s.own.position_m,

@@ -10,9 +10,8 @@
 //! alone.
 //!
 //! Several targets at once: a vessel that must give way to one target cannot
-//! also keep its course for another. When ownship gives way to some target
-//! while it is the stand-on vessel for another, the stand-on encounter is
-//! judged as one in which ownship may act from the start (rule 17(a)(ii)):
+//! also keep its course for another. While ownship has to give way to some
+//! target, its stand-on encounters are judged as ones in which it may act (rule 17(a)(ii); `vorrt_colregs::assess_encounter_acting`):
 //! an early course or speed change is not held against it, a port turn for a
 //! vessel on its port side still is (rule 17(c)). The planner applies the same
 //! reading (`vorrt_colregs::check_maneuver_acting`).
@@ -22,7 +21,7 @@ use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, EncounterSample, Role, RuleParameters,
-    ScoringParameters, assess_encounter, first_latch, safety_score,
+    ScoringParameters, assess_encounter_acting, first_latch, safety_score, update_latch,
 };
 
 /// How ownship fared against one target.
@@ -202,36 +201,22 @@ pub fn evaluate_with(
                 .collect()
         })
         .collect();
-    let latches: Vec<_> = samples
-        .iter()
-        .map(|track| first_latch(track, rules))
-        .collect();
-    // When ownship first had to give way to anyone.
-    let giving_way_from_s = latches
-        .iter()
-        .flatten()
-        .filter(|latch| latch.encounter.role() == Role::GiveWay)
-        .map(|latch| latch.latched_at_s)
-        .fold(f64::INFINITY, f64::min);
-    let acting_rules = RuleParameters {
-        stand_on_action_range_m: f64::INFINITY,
-        ..*rules
-    };
+    // At each sample, whether ownship had to give way to some target: while
+    // it does, it may act for the vessels it stands on for.
+    let mut giving_way = vec![false; record.times_s.len()];
+    for track in &samples {
+        let mut latch = None;
+        for (sample, giving) in track.iter().zip(giving_way.iter_mut()) {
+            latch = update_latch(latch, &sample.own, &sample.target, sample.time_s, rules);
+            *giving |= latch.is_some_and(|latch| latch.encounter.role() == Role::GiveWay);
+        }
+    }
     let targets: Vec<TargetEvaluation> = samples
         .iter()
         .enumerate()
         .map(|(index, track)| {
             let name = record.target_names.get(index).cloned().unwrap_or_default();
-            let first = evaluate_target(name.clone(), track, rules, &scoring);
-            let excused = first.role == Role::StandOn
-                && first.assessment.as_ref().is_some_and(|assessment| {
-                    giving_way_from_s <= assessment.passed_at_s.unwrap_or(f64::INFINITY)
-                });
-            if excused {
-                evaluate_target(name, track, &acting_rules, &scoring)
-            } else {
-                first
-            }
+            evaluate_target(name, track, rules, &scoring, &giving_way)
         })
         .collect();
     let start = scenario.ownship_state().position_m;
@@ -280,13 +265,14 @@ fn evaluate_target(
     samples: &[EncounterSample],
     rules: &RuleParameters,
     scoring: &ScoringParameters,
+    giving_way: &[bool],
 ) -> TargetEvaluation {
     let hull_contact_m = samples.first().map_or(0.0, |sample| {
         0.5 * (sample.own.length_m + sample.target.length_m)
     });
     match first_latch(samples, rules) {
         Some(latch) => {
-            let assessment = assess_encounter(samples, &latch, rules, scoring);
+            let assessment = assess_encounter_acting(samples, &latch, rules, scoring, giving_way);
             TargetEvaluation {
                 name,
                 encounter: assessment.encounter,
