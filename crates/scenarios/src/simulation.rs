@@ -19,6 +19,7 @@ use rand_core::{RngCore, SeedableRng};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, Role, RuleParameters, VesselState, update_latch};
+use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::TargetState;
 use vorrt_planner::{Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint};
@@ -26,6 +27,10 @@ use vorrt_planner::{Plan, PlanStatistics, Planner, PlannerConfig, PlanningProble
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
 pub const ARRIVAL_TOLERANCE_M: f64 = 0.01;
+
+/// A latched encounter is the one the plan foresaw when their reference
+/// courses agree within this, radians (4°).
+pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
 
 /// After a failed plan, seconds until ownship tries again.
 pub const RETRY_AFTER_S: f64 = 30.0;
@@ -41,7 +46,7 @@ pub enum PlanTrigger {
         /// Index of the target.
         target: usize,
     },
-    /// An encounter arose that the plan did not foresee.
+    /// An encounter arose that the plan did not foresee (none, or another type).
     NewEncounter {
         /// Index of the target.
         target: usize,
@@ -335,7 +340,8 @@ struct ActivePlan {
     plan: Plan,
     start_time_s: f64,
     predicted: Vec<TargetState>,
-    anticipated: Vec<bool>,
+    /// Per target, every encounter the plan expects to have with it.
+    anticipated: Vec<Vec<EncounterLatch>>,
 }
 
 /// Runs `scenario` in closed loop with planner seed `seed`.
@@ -445,11 +451,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                         statistics: plan.statistics,
                         waypoints: plan.waypoints.clone(),
                     });
-                    let anticipated = plan
-                        .anticipated_encounters()
-                        .iter()
-                        .map(Option::is_some)
-                        .collect();
+                    let anticipated = anticipated_types(&plan, targets.len());
                     active = Some(ActivePlan {
                         plan,
                         start_time_s: time_s,
@@ -527,9 +529,38 @@ fn replan_trigger(
         }
     }
     for (index, latch) in latches.iter().enumerate() {
-        if latch.is_some() && !active.anticipated.get(index).copied().unwrap_or(true) {
+        // Foreseen: the plan latched the same type against (nearly) the same
+        // reference course, so its COLREGs checks are the ones in force.
+        let foreseen = |actual: &EncounterLatch| {
+            active.anticipated.get(index).is_none_or(|expected| {
+                expected.iter().any(|planned| {
+                    planned.encounter == actual.encounter
+                        && signed_turn(planned.reference_course_rad, actual.reference_course_rad)
+                            .abs()
+                            <= REFERENCE_MATCH_RAD
+                })
+            })
+        };
+        if let Some(latch) = latch
+            && !foreseen(latch)
+        {
             return Some(PlanTrigger::NewEncounter { target: index });
         }
     }
     None
+}
+
+/// Per target, the distinct encounters a plan latches anywhere along its path.
+fn anticipated_types(plan: &Plan, targets: usize) -> Vec<Vec<EncounterLatch>> {
+    let mut types: Vec<Vec<EncounterLatch>> = vec![Vec::new(); targets];
+    for row in &plan.encounters {
+        for (seen, latch) in types.iter_mut().zip(row) {
+            if let Some(latch) = latch
+                && !seen.contains(latch)
+            {
+                seen.push(*latch);
+            }
+        }
+    }
+    types
 }
