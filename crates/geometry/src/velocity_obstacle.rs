@@ -90,6 +90,40 @@ impl VelocityObstacle {
             <= self.combined_radius_m * self.combined_radius_m * relative_velocity.length_squared()
     }
 
+    /// `VelocityObstacle::new(position_a_m, position_b_m, velocity_b_mps,
+    /// combined_radius_m).contains(velocity_a_mps)` without building the cone
+    /// (no `asin`): the same verdict, for callers that test one velocity.
+    ///
+    /// ```
+    /// use vorrt_geometry::{VelocityObstacle, DVec2};
+    /// let (a, b, vb, v) = (DVec2::ZERO, DVec2::new(0.0, 1000.0), DVec2::new(-1.0, 0.0), DVec2::new(-1.0, 4.0));
+    /// assert_eq!(
+    ///     VelocityObstacle::blocks(a, b, vb, 100.0, v),
+    ///     VelocityObstacle::new(a, b, vb, 100.0).contains(v)
+    /// );
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn blocks(
+        position_a_m: DVec2,
+        position_b_m: DVec2,
+        velocity_b_mps: DVec2,
+        combined_radius_m: f64,
+        velocity_a_mps: DVec2,
+    ) -> bool {
+        let combined_radius_m = combined_radius_m.max(0.0);
+        let relative_position_m = position_b_m - position_a_m;
+        if relative_position_m.length() <= combined_radius_m {
+            return true;
+        }
+        let relative_velocity = velocity_a_mps - velocity_b_mps;
+        if relative_velocity.dot(relative_position_m) <= 0.0 {
+            return false;
+        }
+        let lever = cross(relative_position_m, relative_velocity);
+        lever * lever <= combined_radius_m * combined_radius_m * relative_velocity.length_squared()
+    }
+
     /// The same test done literally as the paper states it: a ray from `P_A`
     /// along `V_A - V_B` against the Minkowski-sum disc. Slower than
     /// [`contains`](Self::contains); kept as the reference the fast test is checked against.

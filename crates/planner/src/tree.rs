@@ -7,6 +7,7 @@
 //! reused, so growing the tree allocates nothing.
 
 use crate::config::NearestIndex;
+use crate::plan::RejectionCause;
 use glam::DVec2;
 use rstar::RTree;
 use rstar::primitives::GeomWithData;
@@ -33,9 +34,19 @@ pub struct Tree {
     /// course from its reference made on the branch since it began, radians
     /// (rule 16: readily apparent).
     pub alterations: Vec<f64>,
+    /// Why the move from each node straight for the goal was rejected, once
+    /// tried: the same node and goal always give the same move, so a goal
+    /// sample that picks it again is answered from here.
+    pub goal_rejections: Vec<Option<RejectionCause>>,
     targets: usize,
     index: NearestIndex,
     rtree: RTree<IndexedPoint>,
+    /// The goal and the cosine of the turn bound, for the two caches below.
+    goal: Option<(DVec2, f64)>,
+    /// `(distance², node)` of the node nearest the goal (oldest on ties).
+    nearest_goal: Option<(f64, u32)>,
+    /// The same among nodes that face the goal within one bounded turn.
+    nearest_facing_goal: Option<(f64, u32)>,
 }
 
 impl Tree {
@@ -48,6 +59,10 @@ impl Tree {
         self.parents.clear();
         self.latches.clear();
         self.alterations.clear();
+        self.goal_rejections.clear();
+        self.goal = None;
+        self.nearest_goal = None;
+        self.nearest_facing_goal = None;
         self.positions.reserve(capacity);
         self.courses.reserve(capacity);
         self.headings.reserve(capacity);
@@ -55,9 +70,28 @@ impl Tree {
         self.parents.reserve(capacity);
         self.latches.reserve(capacity * targets);
         self.alterations.reserve(capacity * targets);
+        self.goal_rejections.reserve(capacity);
         self.targets = targets;
         self.index = index;
         self.rtree = RTree::new();
+    }
+
+    /// Keeps, from now on, the nodes nearest `goal_m` (and nearest facing it
+    /// within the turn whose cosine is `min_cos`) as they are added, so that
+    /// [`nearest_facing_goal`](Self::nearest_facing_goal) costs nothing. Call
+    /// after [`reset`](Self::reset), before the first node.
+    pub fn set_goal(&mut self, goal_m: DVec2, min_cos: f64) {
+        self.goal = Some((goal_m, min_cos));
+    }
+
+    /// [`nearest_facing`](Self::nearest_facing) for the goal given to
+    /// [`set_goal`](Self::set_goal), from the kept answer (the same node the
+    /// linear scan finds).
+    #[must_use]
+    pub fn nearest_facing_goal(&self) -> Option<u32> {
+        self.nearest_facing_goal
+            .or(self.nearest_goal)
+            .map(|(_, index)| index)
     }
 
     /// Number of nodes.
@@ -94,6 +128,20 @@ impl Tree {
         self.parents.push(parent);
         self.latches.extend_from_slice(latches);
         self.alterations.extend_from_slice(alterations);
+        self.goal_rejections.push(None);
+        if let Some((goal_m, min_cos)) = self.goal {
+            let distance = position_m.distance_squared(goal_m);
+            if self.nearest_goal.is_none_or(|(best, _)| distance < best) {
+                self.nearest_goal = Some((distance, index));
+            }
+            if faces(self.headings[index as usize], position_m, goal_m, min_cos)
+                && self
+                    .nearest_facing_goal
+                    .is_none_or(|(best, _)| distance < best)
+            {
+                self.nearest_facing_goal = Some((distance, index));
+            }
+        }
         if self.index == NearestIndex::RTree {
             self.rtree
                 .insert(IndexedPoint::new([position_m.x, position_m.y], index));
@@ -147,8 +195,12 @@ impl Tree {
     #[must_use]
     pub fn nearest_facing(&self, point_m: DVec2, min_cos: f64) -> Option<u32> {
         let faces = |index: usize| {
-            let offset = point_m - self.positions[index];
-            self.headings[index].dot(offset) >= min_cos * offset.length()
+            faces(
+                self.headings[index],
+                self.positions[index],
+                point_m,
+                min_cos,
+            )
         };
         match self.index {
             NearestIndex::Linear => {
@@ -198,6 +250,14 @@ impl Tree {
         branch.reverse();
         branch
     }
+}
+
+/// Whether a node at `position_m` heading along `heading` can head for
+/// `point_m` within the turn whose cosine is `min_cos`.
+#[inline]
+fn faces(heading: DVec2, position_m: DVec2, point_m: DVec2, min_cos: f64) -> bool {
+    let offset = point_m - position_m;
+    heading.dot(offset) >= min_cos * offset.length()
 }
 
 #[cfg(test)]

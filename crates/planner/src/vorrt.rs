@@ -137,6 +137,8 @@ impl Planner {
         for attempt in 0..=config.max_restarts {
             statistics.restarts = attempt as u64;
             self.tree.reset(capacity, targets, config.nearest_index);
+            self.tree
+                .set_goal(problem.goal_m, config.max_turn_per_step_rad.cos());
             self.tree.push(
                 own.position_m,
                 own.course_rad,
@@ -213,15 +215,21 @@ impl Planner {
             // A goal sample extends the nearest node that can head for the
             // goal within one bounded turn: the plainly nearest node often
             // points away and would only orbit the goal.
-            let parent = if sample == problem.goal_m {
-                self.tree
-                    .nearest_facing(sample, config.max_turn_per_step_rad.cos())
+            let to_goal = sample == problem.goal_m;
+            let parent = if to_goal {
+                self.tree.nearest_facing_goal()
             } else {
                 self.tree.nearest(sample)
             };
             let Some(parent) = parent else {
                 break;
             };
+            // The same node and the goal make the same move: answer a repeat
+            // from the first verdict (erratum 5's repeated extension).
+            if to_goal && let Some(cause) = self.tree.goal_rejections[parent as usize] {
+                statistics.rejections.record(cause);
+                continue;
+            }
             let candidate = steer(
                 &self.tree,
                 parent,
@@ -239,6 +247,9 @@ impl Planner {
                 self.tree.alterations_of(parent),
             ) {
                 statistics.rejections.record(cause);
+                if to_goal {
+                    self.tree.goal_rejections[parent as usize] = Some(cause);
+                }
                 continue;
             }
             let node = add_node(
