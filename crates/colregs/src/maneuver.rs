@@ -161,22 +161,91 @@ pub fn check_maneuver_acting(
     parameters: &RuleParameters,
     stand_on_acting: bool,
 ) -> Result<(), ManeuverViolation> {
+    check_motion(
+        latch,
+        &CandidateMotion::new(own_position_m, course_rad, speed_mps),
+        target.position_m,
+        target.velocity_mps(),
+        parameters,
+        stand_on_acting,
+        0.0,
+    )
+}
+
+/// A candidate motion of ownship: where it starts, its course and speed, and
+/// the velocity they make (computed once, for callers that test many targets).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CandidateMotion {
+    /// Where the motion starts, metres.
+    pub position_m: DVec2,
+    /// Course, radians.
+    pub course_rad: f64,
+    /// Speed, m/s.
+    pub speed_mps: f64,
+    /// `speed · (sin c, cos c)`, m/s.
+    pub velocity_mps: DVec2,
+}
+
+impl CandidateMotion {
+    /// The motion on `course_rad` at `speed_mps` from `position_m`.
+    #[must_use]
+    pub fn new(position_m: DVec2, course_rad: f64, speed_mps: f64) -> Self {
+        Self {
+            position_m,
+            course_rad,
+            speed_mps,
+            velocity_mps: angle::velocity(course_rad, speed_mps),
+        }
+    }
+}
+
+/// [`check_maneuver_acting`] for a precomputed [`CandidateMotion`] and a
+/// target given by its position and velocity, without a trigonometric call
+/// per target, and knowing the history of the encounter: `altered_rad` is the
+/// largest alteration from the reference course already made while it has
+/// been in force (0 for none: then the verdicts are `check_maneuver_acting`'s).
+///
+/// In head-on and give-way crossing the action is a turn to starboard (rules
+/// 14, 15, 16): the first alteration must be to starboard, and so must the
+/// largest. Once a readily apparent starboard alteration has been made
+/// (`altered_rad` at least [`apparent_turn_rad`](RuleParameters::apparent_turn_rad)),
+/// ownship may ease back and beyond its original course by less than that
+/// alteration, as evaluators judge it (notes, "Compliance scoring"); crossing
+/// ahead and passing starboard to starboard stay forbidden. Without this a
+/// vessel crossing a stream of traffic could never come back toward its route
+/// while any vessel of the stream was in force.
+///
+/// # Errors
+/// The [`ManeuverViolation`] the candidate would commit.
+pub fn check_motion(
+    latch: &EncounterLatch,
+    own: &CandidateMotion,
+    target_position_m: DVec2,
+    target_velocity_mps: DVec2,
+    parameters: &RuleParameters,
+    stand_on_acting: bool,
+    altered_rad: f64,
+) -> Result<(), ManeuverViolation> {
+    let own_position_m = own.position_m;
+    let course_rad = own.course_rad;
+    let speed_mps = own.speed_mps;
+    let own_velocity = own.velocity_mps;
+    let target_velocity = target_velocity_mps;
     let turn = angle::signed_turn(latch.reference_course_rad, course_rad);
     let turned_to_port = turn < -parameters.turn_tolerance_rad;
-    let own_velocity = angle::velocity(course_rad, speed_mps);
-    let target_velocity = target.velocity_mps();
+    let eased_back = altered_rad >= parameters.apparent_turn_rad && -turn < altered_rad;
     match latch.encounter {
         Encounter::HeadOn => {
-            if turned_to_port {
+            if turned_to_port && !eased_back {
                 return Err(ManeuverViolation::PortTurn);
             }
             let closing =
-                (target.position_m - own_position_m).dot(own_velocity - target_velocity) > 0.0;
+                (target_position_m - own_position_m).dot(own_velocity - target_velocity) > 0.0;
             if closing
                 && passing_side(
                     own_position_m,
                     own_velocity,
-                    target.position_m,
+                    target_position_m,
                     target_velocity,
                 ) == PassingSide::Starboard
             {
@@ -185,13 +254,13 @@ pub fn check_maneuver_acting(
             Ok(())
         }
         Encounter::CrossingGiveWay => {
-            if turned_to_port {
+            if turned_to_port && !eased_back {
                 return Err(ManeuverViolation::PortTurn);
             }
             if crosses_ahead(
                 own_position_m,
                 own_velocity,
-                target.position_m,
+                target_position_m,
                 target_velocity,
             ) {
                 return Err(ManeuverViolation::CrossingAhead);
@@ -206,7 +275,7 @@ pub fn check_maneuver_acting(
                 let target_on_port = angle::relative_bearing(
                     own_position_m,
                     latch.reference_course_rad,
-                    target.position_m,
+                    target_position_m,
                 ) >= PI;
                 if latch.encounter == Encounter::CrossingStandOn && turned_to_port && target_on_port
                 {

@@ -26,9 +26,7 @@
 use crate::config::PlannerConfig;
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::{
-    EncounterLatch, Role, check_alteration, check_maneuver_acting, stand_on_may_act,
-};
+use vorrt_colregs::{CandidateMotion, EncounterLatch, Role, check_alteration, check_motion};
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
 use vorrt_jfs::LinearTrack;
@@ -116,25 +114,40 @@ impl SafetyChecker<'_> {
             .iter()
             .flatten()
             .any(|latch| latch.encounter.role() == Role::GiveWay);
+        let motion = CandidateMotion {
+            position_m: candidate.start_m,
+            course_rad: candidate.course_rad,
+            speed_mps: self.own_speed_mps,
+            velocity_mps: candidate.velocity_mps,
+        };
         for (index, track) in self.tracks.iter().enumerate() {
             let target_position = track.position_at(candidate.start_elapsed_s);
+            let target_velocity = track.velocity_at(candidate.start_elapsed_s);
             let range = candidate.start_m.distance(target_position);
             let latch = latches.get(index).copied().flatten();
-            let target_now = track.state_at(candidate.start_elapsed_s);
-            let acting = giving_way || stand_on_may_act(candidate.start_m, &target_now, rules);
+            if latch.is_none() && range >= rules.mtd_m {
+                // Beyond MTD with no encounter, only the segment's clearance
+                // applies, and it cannot fail while the two could not close
+                // the range to d_th even heading straight for each other.
+                let reach = (self.own_speed_mps + target_velocity.length()) * candidate.duration_s;
+                if range - reach >= clearance {
+                    continue;
+                }
+            }
+            let acting = giving_way || range <= rules.stand_on_action_range_m;
             let waived =
                 latch.is_some_and(|latch| latch.encounter.role() == Role::StandOn && !acting);
             let near = range < rules.mtd_m && !waived;
-            if near {
-                let obstacle = VelocityObstacle::new(
+            if near
+                && VelocityObstacle::blocks(
                     candidate.start_m,
                     target_position,
-                    track.velocity_at(candidate.start_elapsed_s),
+                    target_velocity,
                     self.own_length_m + track.vessel.length_m,
-                );
-                if obstacle.contains(candidate.velocity_mps) {
-                    return Err(RejectionCause::VelocityObstacle);
-                }
+                    candidate.velocity_mps,
+                )
+            {
+                return Err(RejectionCause::VelocityObstacle);
             }
             let during = min_distance_over(
                 candidate.start_m,
@@ -159,17 +172,17 @@ impl SafetyChecker<'_> {
                 }
             }
             if let Some(latch) = latch {
-                check_maneuver_acting(
+                let altered = alterations.get(index).copied().unwrap_or(0.0);
+                check_motion(
                     &latch,
-                    candidate.start_m,
-                    candidate.course_rad,
-                    self.own_speed_mps,
-                    &target_now,
+                    &motion,
+                    target_position,
+                    target_velocity,
                     rules,
                     acting,
+                    altered,
                 )
                 .map_err(RejectionCause::Colregs)?;
-                let altered = alterations.get(index).copied().unwrap_or(0.0);
                 check_alteration(&latch, altered, candidate.course_rad, rules)
                     .map_err(RejectionCause::Colregs)?;
             }
