@@ -52,24 +52,20 @@ const NOTES: &str = "
 ## Reading the table
 
 - **Paper figures.** The paper gives no coordinates, speeds or sizes, so its
-  numbers are not reproducible; our fixtures state theirs and are at least as
-  demanding (every target on or near a collision course). The paper's minimum
-  CPAs (1365 m overtaking, 470 m head-on, 300 m multi-vessel, 135 m in the TSS)
-  are all above d_th, as ours are. Our TSS crossing keeps far more than 135 m
-  because the planner passes astern of every give-way target in the stream
-  (rule 15 read strictly) and does not turn to port while they are latched, so
-  it waits for gaps and the path grows (see its overhead).
-- **Rule 17(c) findings** (Imazu 4, 13, 16): a stand-on ownship that had
-  already acted turns a few degrees to port of its original course. The
-  planner judges the release of an encounter at its 100 m nodes on the course
-  that led there, the evaluator at 5 s samples on the course being steered;
-  when the turn back toward the goal comes right at the release, the evaluator
-  still sees the encounter in force. Holding the latch longer in the planner
-  removes these findings but halves the planner's success on the Imazu set
-  (measured: 104-109 of 220 plans against 210 of 220); left as it is.
-- **Rule 16 \"not readily apparent\"** (Imazu 5, 8, 10): the give-way turn was
-  between 23 and 30 degrees; evaluators ask for 30 or more. The planner does not
-  yet demand a minimum alteration; clearance was kept (min distances above).
+  numbers cannot be reproduced exactly; our fixtures state theirs and are at
+  least as demanding (every target on or near a collision course). Where the
+  paper reports a minimum CPA, ours is of the same order: head-on 434 m
+  (paper 470 m), multi-vessel 297 m (paper 300 m). Overtaking passes closer
+  than the paper's 1365 m (our target is 1 nm dead ahead at half our speed;
+  the planner keeps d_th, not a mile). In the TSS our ownship passes astern of
+  every vessel of the stream (rule 15 read strictly) instead of threading it
+  at 135 m, so it keeps far more than d_th and sails 17% further.
+- **Imazu 9, rule 16 \"late action\"**: ownship had already altered course
+  for TS1 when the risk with TS2 arose; its next alteration, which TS2 counts
+  as its action, came inside 1 nm. Clearance was kept (384 m).
+- **Encounter types** are those latched when risk first arose, from the
+  recorded courses: a target ahead that ownship had already turned away from
+  before risk arose can be latched as a crossing rather than a head-on.
 - **Imazu 5 = 8 and 15 = 22** are duplicates in the published table (notes), so
   their rows agree.
 ";
