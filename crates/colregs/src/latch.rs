@@ -53,7 +53,9 @@ pub fn has_passed(
     parameters: &RuleParameters,
 ) -> bool {
     let line_of_sight = target.position_m - own.position_m;
-    let relative_velocity = own.velocity_mps() - target.velocity_mps();
+    let own_velocity = own.velocity_mps();
+    let target_velocity = target.velocity_mps();
+    let relative_velocity = own_velocity - target_velocity;
     let opening = line_of_sight.dot(relative_velocity) <= 0.0;
     if !opening {
         return false;
@@ -65,8 +67,8 @@ pub fn has_passed(
         velocity == glam::DVec2::ZERO
             || velocity.angle_to(towards).abs() > parameters.passed_angle_rad
     };
-    let own_away = points_away(own.velocity_mps(), line_of_sight);
-    let target_away = points_away(target.velocity_mps(), -line_of_sight);
+    let own_away = points_away(own_velocity, line_of_sight);
+    let target_away = points_away(target_velocity, -line_of_sight);
     match encounter {
         Encounter::Overtaking | Encounter::BeingOvertaken => own_away || target_away,
         _ => own_away && target_away,
@@ -97,7 +99,10 @@ pub fn update_latch(
         Some(latch) if has_passed(own, target, latch.encounter, parameters) => None,
         Some(latch) => Some(latch),
         None => {
-            if !assess_risk(own, target, parameters).at_risk {
+            // Beyond MTD there is no risk (and no need to work out the CPA).
+            if own.range_to(target) >= parameters.mtd_m
+                || !assess_risk(own, target, parameters).at_risk
+            {
                 return None;
             }
             match classify(own, target, parameters) {
