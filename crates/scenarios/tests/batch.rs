@@ -90,11 +90,7 @@ fn check_sharding(spec: &GeneratorSpec, seed: u64, count: u64) {
 
 #[test]
 fn shards_make_the_whole_batch_and_merge_to_its_summary() {
-    check_sharding(
-        &GeneratorSpec::OpenSea(OpenSeaSpec::with_targets(2)),
-        17,
-        6,
-    );
+    check_sharding(&GeneratorSpec::OpenSea(OpenSeaSpec::with_targets(2)), 17, 6);
 }
 
 #[test]
@@ -129,7 +125,10 @@ fn progress_is_reported_for_every_run() {
         seen.iter().map(|(done, _)| *done).collect::<Vec<_>>(),
         [1, 2, 3]
     );
-    assert_eq!(rows.iter().map(|row| row.index).collect::<Vec<_>>(), [0, 1, 2]);
+    assert_eq!(
+        rows.iter().map(|row| row.index).collect::<Vec<_>>(),
+        [0, 1, 2]
+    );
     assert!(rows.iter().all(|row| row.clearance_m == 100.0));
 }
 
