@@ -16,12 +16,14 @@
 //! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
 //! | [`tree`] | [`Tree`](tree::Tree): the node arena and nearest-node search (linear or R*-tree) |
 //! | [`sampler`] | [`Sampler`](sampler::Sampler): ChaCha8 goal-biased sampling |
+//! | [`evasion`] | [`evasive_course`]: the course that keeps farthest from every target, for when no safe path is found |
 //! | [`plan`] | [`Plan`], [`Waypoint`], [`PlanStatistics`], [`RejectionCause`] |
 //! | [`error`] | [`PlannerError`] |
 #![forbid(missing_docs)]
 
 pub mod config;
 pub mod error;
+pub mod evasion;
 pub mod plan;
 pub mod problem;
 pub mod safety;
@@ -31,6 +33,7 @@ pub mod vorrt;
 
 pub use config::{NearestIndex, PlannerConfig};
 pub use error::PlannerError;
+pub use evasion::{EvasiveManeuver, evasive_course};
 pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
 pub use vorrt::Planner;
