@@ -7,9 +7,13 @@
 //! what it announces (see [`Behaviour`]). Ownship replans when its plan stops
 //! being valid, as the paper says (§III-D): when a target is more than
 //! `replan_deviation_m` off the position the plan predicted for it, or when an
-//! encounter arises that the plan did not foresee. A failed replan keeps the
-//! previous plan (or, with none, the present course) and is retried after
-//! [`RETRY_AFTER_S`]. Every vessel's trajectory is recorded at every step, and
+//! encounter arises that the plan did not foresee. When planning fails,
+//! ownship keeps its previous plan if that still keeps the clearance from
+//! every target as now predicted; otherwise it steers the evasive course
+//! (`vorrt_planner::evasive_course`: its present course if that keeps the
+//! clearance over the next [`EVASION_HORIZON_S`], else the smallest turn that
+//! does, else the course that keeps farthest) and holds it; either way it
+//! tries again after [`RETRY_AFTER_S`]. Every vessel's trajectory is recorded at every step, and
 //! the encounters are latched from the true states as a bridge officer would.
 
 use crate::error::ScenarioError;
@@ -22,7 +26,10 @@ use vorrt_colregs::{EncounterLatch, Role, RuleParameters, VesselState, update_la
 use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::TargetState;
-use vorrt_planner::{Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint};
+use vorrt_planner::safety::min_distance_over;
+use vorrt_planner::{
+    Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, evasive_course,
+};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
@@ -33,7 +40,13 @@ pub const ARRIVAL_TOLERANCE_M: f64 = 0.01;
 pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
 
 /// After a failed plan, seconds until ownship tries again.
-pub const RETRY_AFTER_S: f64 = 30.0;
+pub const RETRY_AFTER_S: f64 = 20.0;
+
+/// How far ahead the evasive course is judged, seconds.
+pub const EVASION_HORIZON_S: f64 = 600.0;
+
+/// How many evenly spaced courses the evasive manoeuvre chooses from (5°).
+pub const EVASION_COURSES: usize = 72;
 
 /// Why ownship planned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -72,6 +85,9 @@ pub struct PlanEvent {
     pub statistics: PlanStatistics,
     /// The plan's waypoints (empty on failure).
     pub waypoints: Vec<Waypoint>,
+    /// On failure, the evasive course ownship turned to, degrees (`None` when
+    /// it kept its previous plan, still safe).
+    pub evasive_course_deg: Option<f64>,
 }
 
 /// Everything that happened in one closed-loop run.
@@ -450,6 +466,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                         error: None,
                         statistics: plan.statistics,
                         waypoints: plan.waypoints.clone(),
+                        evasive_course_deg: None,
                     });
                     let anticipated = anticipated_types(&plan, targets.len());
                     active = Some(ActivePlan {
@@ -471,6 +488,22 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                             ..PlanStatistics::default()
                         },
                     };
+                    let keep_plan = active.as_ref().is_some_and(|active| {
+                        plan_keeps_clearance(&active.plan, &problem, config.clearance_m)
+                    });
+                    let evasive_course_deg = if keep_plan {
+                        None
+                    } else {
+                        let evasion = evasive_course(
+                            &problem,
+                            EVASION_HORIZON_S,
+                            EVASION_COURSES,
+                            config.clearance_m,
+                        );
+                        active = None;
+                        own.course_rad = evasion.course_rad;
+                        Some(evasion.course_rad.to_degrees())
+                    };
                     record.plans.push(PlanEvent {
                         time_s,
                         trigger: why,
@@ -479,6 +512,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                         error: Some(error.to_string()),
                         statistics,
                         waypoints: Vec::new(),
+                        evasive_course_deg,
                     });
                 }
             }
@@ -498,6 +532,29 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
         time_s = next_time_s;
     }
     record
+}
+
+/// Whether the rest of `plan`, from the problem's time on, keeps `clearance_m`
+/// from every target as the problem now predicts it.
+fn plan_keeps_clearance(plan: &Plan, problem: &PlanningProblem, clearance_m: f64) -> bool {
+    let now_s = problem.start_time_s;
+    let tracks: Vec<_> = problem.targets.iter().map(TargetState::track).collect();
+    plan.waypoints.windows(2).all(|pair| {
+        let (from, to) = (pair[0], pair[1]);
+        if to.time_s <= now_s {
+            return true;
+        }
+        let start_s = from.time_s.max(now_s);
+        let duration_s = to.time_s - start_s;
+        if duration_s <= 0.0 {
+            return true;
+        }
+        let velocity = (to.position_m - from.position_m) / (to.time_s - from.time_s);
+        let start_m = from.position_m + velocity * (start_s - from.time_s);
+        tracks.iter().all(|track| {
+            min_distance_over(start_m, velocity, track, start_s - now_s, duration_s) >= clearance_m
+        })
+    })
 }
 
 /// Ownship's state at `time_s` along `plan` (at the goal once the plan ends).
