@@ -104,3 +104,23 @@ fn a_target_predicted_as_it_moves_needs_no_replan() {
     assert!(record.reached_goal);
     assert!(evaluate(&scenario, &record).clearance_kept);
 }
+
+#[test]
+fn when_planning_fails_ownship_evades_instead_of_holding_course() {
+    // A planner that cannot succeed (one node per phase, no restart) facing a
+    // head-on target on a collision course: every plan fails, so ownship must
+    // fall back on the evasive course, which keeps the clearance.
+    let mut scenario = fixture("paper/head_on.ron");
+    scenario.planner.nodes_per_phase = Some(1);
+    scenario.planner.samples_per_phase = Some(1);
+    scenario.planner.max_restarts = Some(0);
+    let record = simulate(&scenario, 1).expect("valid settings");
+    assert!(record.plans.iter().all(|event| !event.succeeded));
+    let evasions: Vec<f64> = record.plans.iter().filter_map(|event| event.evasive_course_deg).collect();
+    assert!(!evasions.is_empty());
+    let evaluation = evaluate(&scenario, &record);
+    assert!(!evaluation.reached_goal);
+    assert!(evaluation.clearance_kept, "min {} m", evaluation.min_distance_m);
+    // Holding course would have met the target head-on.
+    assert!(evaluation.min_distance_m >= scenario.planner_config().expect("valid").clearance_m);
+}
