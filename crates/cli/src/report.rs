@@ -234,6 +234,8 @@ pub struct RejectionsOutput {
     pub stand_on_speed_change: u64,
     /// A port turn for a vessel on the port side (rule 17(c)).
     pub port_turn_for_port_vessel: u64,
+    /// A give-way alteration too small to be readily apparent (rules 8(b), 16).
+    pub insufficient_alteration: u64,
 }
 
 impl From<&RejectionCounts> for RejectionsOutput {
@@ -248,6 +250,7 @@ impl From<&RejectionCounts> for RejectionsOutput {
             stand_on_course_change: counts.stand_on_course_change,
             stand_on_speed_change: counts.stand_on_speed_change,
             port_turn_for_port_vessel: counts.port_turn_for_port_vessel,
+            insufficient_alteration: counts.insufficient_alteration,
         }
     }
 }
