@@ -63,6 +63,11 @@ const NOTES: &str = "
 - **Imazu 9, rule 16 \"late action\"**: ownship had already altered course
   for TS1 when the risk with TS2 arose; its next alteration, which TS2 counts
   as its action, came inside 1 nm. Clearance was kept (384 m).
+- **Imazu 13** (a head-on and two vessels converging from port): the planner
+  finds no path from the start (the latch ratchet described in
+  `docs/performance.md`); ownship keeps clear on the evasive course and
+  replans, 14 of its 16 planner calls failing, and arrives clear and
+  compliant with a 37% longer path.
 - **Encounter types** are those latched when risk first arose, from the
   recorded courses: a target ahead that ownship had already turned away from
   before risk arose can be latched as a crossing rather than a head-on.
