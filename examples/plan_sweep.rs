@@ -14,8 +14,13 @@ use vorrt::planner::Planner;
 use vorrt::scenarios::{bundled_fixtures_dir, load_dir};
 
 fn main() -> ExitCode {
-    let folder = std::env::args().nth(1).unwrap_or_else(|| "imazu".to_owned());
-    let Ok(seeds) = std::env::args().nth(2).map_or(Ok(10), |text| text.parse::<u64>()) else {
+    let folder = std::env::args()
+        .nth(1)
+        .unwrap_or_else(|| "imazu".to_owned());
+    let Ok(seeds) = std::env::args()
+        .nth(2)
+        .map_or(Ok(10), |text| text.parse::<u64>())
+    else {
         eprintln!("SEEDS must be a whole number");
         return ExitCode::from(2);
     };

@@ -116,11 +116,19 @@ fn when_planning_fails_ownship_evades_instead_of_holding_course() {
     scenario.planner.max_restarts = Some(0);
     let record = simulate(&scenario, 1).expect("valid settings");
     assert!(record.plans.iter().all(|event| !event.succeeded));
-    let evasions: Vec<f64> = record.plans.iter().filter_map(|event| event.evasive_course_deg).collect();
+    let evasions: Vec<f64> = record
+        .plans
+        .iter()
+        .filter_map(|event| event.evasive_course_deg)
+        .collect();
     assert!(!evasions.is_empty());
     let evaluation = evaluate(&scenario, &record);
     assert!(!evaluation.reached_goal);
-    assert!(evaluation.clearance_kept, "min {} m", evaluation.min_distance_m);
+    assert!(
+        evaluation.clearance_kept,
+        "min {} m",
+        evaluation.min_distance_m
+    );
     // Holding course would have met the target head-on.
     assert!(evaluation.min_distance_m >= scenario.planner_config().expect("valid").clearance_m);
 }
