@@ -180,32 +180,47 @@ pub fn write_plots(
 ) -> Result<(), String> {
     font::register();
     let data = PlotData::new(scenario, record, evaluation);
-    let file = |name: &str| dir.join(name);
-    {
-        let path = file("trajectories.svg");
-        let root = SVGBackend::new(&path, SIZE).into_drawing_area();
-        draw_trajectories(&root, &data)?;
+    for plot in [Plot::Trajectories, Plot::Distance] {
+        let svg = dir.join(format!("{}.svg", plot.stem()));
+        let root = SVGBackend::new(&svg, SIZE).into_drawing_area();
+        plot.draw(&root, &data)?;
         root.present().map_err(to_text)?;
-    }
-    {
-        let path = file("trajectories.png");
-        let root = BitMapBackend::new(&path, SIZE).into_drawing_area();
-        draw_trajectories(&root, &data)?;
-        root.present().map_err(to_text)?;
-    }
-    {
-        let path = file("distance.svg");
-        let root = SVGBackend::new(&path, SIZE).into_drawing_area();
-        draw_distance(&root, &data)?;
-        root.present().map_err(to_text)?;
-    }
-    {
-        let path = file("distance.png");
-        let root = BitMapBackend::new(&path, SIZE).into_drawing_area();
-        draw_distance(&root, &data)?;
+        let png = dir.join(format!("{}.png", plot.stem()));
+        let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
+        plot.draw(&root, &data)?;
         root.present().map_err(to_text)?;
     }
     Ok(())
+}
+
+/// The two plots written beside `report.json`, each as SVG and PNG.
+#[derive(Debug, Clone, Copy)]
+enum Plot {
+    /// Every vessel's track, closest approaches, d_th and lanes.
+    Trajectories,
+    /// Distance from ownship to each target over time.
+    Distance,
+}
+
+impl Plot {
+    /// File name without extension.
+    fn stem(self) -> &'static str {
+        match self {
+            Plot::Trajectories => "trajectories",
+            Plot::Distance => "distance",
+        }
+    }
+
+    fn draw<DB: DrawingBackend>(
+        self,
+        root: &DrawingArea<DB, Shift>,
+        data: &PlotData<'_>,
+    ) -> Result<(), String> {
+        match self {
+            Plot::Trajectories => draw_trajectories(root, data),
+            Plot::Distance => draw_distance(root, data),
+        }
+    }
 }
 
 /// A rectangle of the data plane.
