@@ -38,8 +38,9 @@ pub struct RuleParameters {
     /// Range under which a stand-on vessel may act on its own because the
     /// give-way vessel has not (rule 17(a)(ii), 17(b)). Default 2 nm (3704 m).
     pub stand_on_action_range_m: f64,
-    /// Course change that counts as "readily apparent" (rule 16; used by
-    /// compliance scoring). Default 30°.
+    /// Course change that counts as "readily apparent" (rules 8(b), 16): the
+    /// smallest give-way alteration [`check_alteration`](crate::check_alteration)
+    /// allows, and the one compliance scoring asks for. Default 30°.
     pub apparent_turn_rad: f64,
 }
 
