@@ -255,12 +255,22 @@ impl Plan {
         ))
     }
 
-    /// For each target, the first encounter the plan expects to have with it.
+    /// For each target, every distinct encounter the plan latches with it
+    /// along its path, in the order they arise (empty for a target it never
+    /// meets). A closed loop compares them with the encounters it observes.
     #[must_use]
-    pub fn anticipated_encounters(&self) -> Vec<Option<EncounterLatch>> {
+    pub fn anticipated_encounters(&self) -> Vec<Vec<EncounterLatch>> {
         let targets = self.encounters.first().map_or(0, Vec::len);
-        (0..targets)
-            .map(|target| self.encounters.iter().find_map(|row| row[target]))
-            .collect()
+        let mut anticipated: Vec<Vec<EncounterLatch>> = vec![Vec::new(); targets];
+        for row in &self.encounters {
+            for (seen, latch) in anticipated.iter_mut().zip(row) {
+                if let Some(latch) = latch
+                    && !seen.contains(latch)
+                {
+                    seen.push(*latch);
+                }
+            }
+        }
+        anticipated
     }
 }

@@ -321,4 +321,23 @@ mod tests {
         tree.push(DVec2::Y, 0.0, 2.0, 1, &[], &[]);
         assert_eq!(tree.branch(2), vec![0, 1, 2]);
     }
+
+    #[test]
+    fn kept_goal_answer_equals_the_scan() {
+        let goal = DVec2::new(0.0, 1000.0);
+        let min_cos = 30f64.to_radians().cos();
+        let mut tree = Tree::default();
+        tree.reset(64, 0, NearestIndex::Linear);
+        tree.set_goal(goal, min_cos);
+        for i in 0..60u32 {
+            let position = DVec2::new(f64::from(i * 37 % 101) - 50.0, f64::from(i * 53 % 97) * 9.0);
+            let course = f64::from(i * 71 % 360).to_radians();
+            tree.push(position, course, 0.0, 0, &[], &[]);
+            assert_eq!(
+                tree.nearest_facing_goal(),
+                tree.nearest_facing(goal, min_cos),
+                "after {i}"
+            );
+        }
+    }
 }

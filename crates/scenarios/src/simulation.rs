@@ -468,7 +468,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                         waypoints: plan.waypoints.clone(),
                         evasive_course_deg: None,
                     });
-                    let anticipated = anticipated_types(&plan, targets.len());
+                    let anticipated = plan.anticipated_encounters();
                     active = Some(ActivePlan {
                         plan,
                         start_time_s: time_s,
@@ -605,19 +605,4 @@ fn replan_trigger(
         }
     }
     None
-}
-
-/// Per target, the distinct encounters a plan latches anywhere along its path.
-fn anticipated_types(plan: &Plan, targets: usize) -> Vec<Vec<EncounterLatch>> {
-    let mut types: Vec<Vec<EncounterLatch>> = vec![Vec::new(); targets];
-    for row in &plan.encounters {
-        for (seen, latch) in types.iter_mut().zip(row) {
-            if let Some(latch) = latch
-                && !seen.contains(latch)
-            {
-                seen.push(*latch);
-            }
-        }
-    }
-    types
 }
