@@ -193,6 +193,20 @@ pub fn write_plots(
     Ok(())
 }
 
+/// One label of the key to the symbols, in the legend panel.
+fn key_label<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    label: impl Into<String>,
+    at: (i32, i32),
+) -> Result<(), String> {
+    area.draw(&Text::new(
+        label.into(),
+        at,
+        (FAMILY, 13).into_font().color(&BLACK),
+    ))
+    .map_err(to_text)
+}
+
 /// The two plots written beside `report.json`, each as SVG and PNG.
 #[derive(Debug, Clone, Copy)]
 enum Plot {
@@ -777,35 +791,24 @@ fn draw_legend<DB: DrawingBackend>(
     let symbol_x = x + 14;
     area.draw(&(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 5, black.filled())))
         .map_err(to_text)?;
-    area.draw(&Text::new(
-        "start",
-        (x + 36, y),
-        (FAMILY, 13).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
+    key_label(area, "start", (x + 36, y))?;
     y += step;
     area.draw(
         &(EmptyElement::at((symbol_x, y + 7))
             + Polygon::new(triangle(std::f64::consts::FRAC_PI_2, 8.0), black.filled())),
     )
     .map_err(to_text)?;
-    area.draw(&Text::new(
+    key_label(
+        area,
         format!("course, every {interval_min:.0} min"),
         (x + 36, y),
-        (FAMILY, 13).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
+    )?;
     y += step;
     area.draw(
         &(EmptyElement::at((symbol_x, y + 7)) + Cross::new((0, 0), 6, black.stroke_width(2))),
     )
     .map_err(to_text)?;
-    area.draw(&Text::new(
-        "goal",
-        (x + 36, y),
-        (FAMILY, 13).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
+    key_label(area, "goal", (x + 36, y))?;
     y += step;
     area.draw(&PathElement::new(
         vec![(x, y + 7), (x + 8, y + 7)],
@@ -817,23 +820,17 @@ fn draw_legend<DB: DrawingBackend>(
         black.stroke_width(2),
     ))
     .map_err(to_text)?;
-    area.draw(&Text::new(
-        "closest approach",
-        (x + 36, y),
-        (FAMILY, 13).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
+    key_label(area, "closest approach", (x + 36, y))?;
     y += step;
     area.draw(
         &(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 8, grey.stroke_width(1))),
     )
     .map_err(to_text)?;
-    area.draw(&Text::new(
+    key_label(
+        area,
         format!("d_th = {:.0} m around ownship", data.d_th_m),
         (x + 36, y),
-        (FAMILY, 13).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
+    )?;
     if !data.lanes.is_empty() {
         y += step;
         area.draw(&Rectangle::new(
