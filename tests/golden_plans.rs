@@ -9,7 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
-use vorrt::planner::{Planner, PlannerError};
+use vorrt::planner::{Planner, PlannerConfig, PlannerError, Turning};
 use vorrt::scenarios::Scenario;
 
 /// The fixtures planned, as paths under `fixtures/`.
@@ -98,9 +98,16 @@ fn compute() -> Vec<GoldenCase> {
         let path = workspace_path(&format!("fixtures/{fixture}.ron"));
         let scenario =
             Scenario::load(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
-        let config = scenario
-            .planner_config()
-            .unwrap_or_else(|error| panic!("{fixture}: {error}"));
+        // The tree's own branch, with the paper's instantaneous turns: this is
+        // the search the golden outputs were recorded from. The default,
+        // rate-limited plans simplify this branch (`vorrt_planner::simplify`)
+        // and are checked by the planner's property tests.
+        let config = PlannerConfig {
+            turning: Turning::Instant,
+            ..scenario
+                .planner_config()
+                .unwrap_or_else(|error| panic!("{fixture}: {error}"))
+        };
         let problem = scenario.planning_problem();
         for seed in SEEDS {
             let mut planner = Planner::new(config).expect("valid configuration");

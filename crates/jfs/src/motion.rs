@@ -253,6 +253,43 @@ impl Leg {
         }
     }
 
+    /// The rest of the leg from `elapsed_s` seconds in: the same curve, as a
+    /// leg of its own.
+    ///
+    /// ```
+    /// use vorrt_jfs::motion::{MotionModel, Pose, RateLimitedTurn};
+    /// use glam::DVec2;
+    /// let model = RateLimitedTurn { turn_radius_m: 400.0 };
+    /// let from = Pose { position_m: DVec2::ZERO, course_rad: 0.0 };
+    /// let leg = model.steer(from, DVec2::new(2000.0, 300.0), 5.0, f64::INFINITY).unwrap();
+    /// let rest = leg.remainder(30.0);
+    /// assert!(rest.end_m().distance(leg.end_m()) < 1e-6);
+    /// assert!((rest.duration_s() - (leg.duration_s() - 30.0)).abs() < 1e-9);
+    /// ```
+    #[must_use]
+    pub fn remainder(&self, elapsed_s: f64) -> Leg {
+        let pose = self.pose_at(elapsed_s);
+        let turn_s = self.turn_duration_s();
+        let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
+        if elapsed_s < turn_s {
+            let swept = elapsed_s * self.speed_mps / self.turn_radius_m;
+            Leg {
+                start_m: pose.position_m,
+                start_course_rad: pose.course_rad,
+                turn_rad: self.turn_rad - self.turn_rad.signum() * swept,
+                ..*self
+            }
+        } else {
+            Leg {
+                start_m: pose.position_m,
+                start_course_rad: self.course_rad,
+                turn_rad: 0.0,
+                straight_m: (self.straight_m - (elapsed_s - turn_s) * self.speed_mps).max(0.0),
+                ..*self
+            }
+        }
+    }
+
     /// How far a chord of [`chords`](Self::pieces) may lie from the arc, metres.
     #[must_use]
     pub fn chord_error_m(&self) -> f64 {

@@ -16,6 +16,41 @@ pub enum NearestIndex {
     RTree,
 }
 
+/// How ownship turns along the plan it is given.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Turning {
+    /// The paper's joint step: the course changes at a node, instantaneously
+    /// (bounded by `max_turn_per_step_rad`); the plan is the tree's branch.
+    Instant,
+    /// At most the default rate of turn of ownship's length and speed
+    /// (`vorrt_jfs::default_turn_rate_rad_s`): the branch is simplified into
+    /// the fewest legs the validity check accepts, joined by arcs.
+    #[default]
+    FromLength,
+    /// At most this rate of turn, radians per second; as `FromLength`
+    /// otherwise.
+    MaxRate {
+        /// Largest rate of turn, radians per second.
+        max_turn_rate_rad_s: f64,
+    },
+}
+
+impl Turning {
+    /// The largest rate of turn of ownship (`length_m`, `speed_mps`),
+    /// radians per second; `None` for instantaneous turns.
+    #[must_use]
+    pub fn max_turn_rate_rad_s(self, length_m: f64, speed_mps: f64) -> Option<f64> {
+        match self {
+            Turning::Instant => None,
+            Turning::FromLength => Some(vorrt_jfs::default_turn_rate_rad_s(length_m, speed_mps)),
+            Turning::MaxRate {
+                max_turn_rate_rad_s,
+            } => Some(max_turn_rate_rad_s),
+        }
+    }
+}
+
 /// Every knob of the VORRT planner.
 ///
 /// Defaults are the paper's where it gives one (`d' = 100 m`, `d_th = 200 m`,
@@ -66,6 +101,10 @@ pub struct PlannerConfig {
     pub time_budget_s: Option<f64>,
     /// Nearest-node search.
     pub nearest_index: NearestIndex,
+    /// How ownship turns: instantaneously as in the paper, or at a bounded
+    /// rate of turn (the default), in which case the plan is the tree's
+    /// branch simplified into legs joined by arcs.
+    pub turning: Turning,
     /// The COLREGs constants: MTD, sectors, stand-on tolerances.
     pub rules: RuleParameters,
 }
@@ -86,6 +125,7 @@ impl Default for PlannerConfig {
             lookahead_s: 1800.0,
             time_budget_s: None,
             nearest_index: NearestIndex::Linear,
+            turning: Turning::FromLength,
             rules: RuleParameters::default(),
         }
     }
@@ -182,6 +222,17 @@ impl PlannerConfig {
                 "time_budget_s",
                 budget,
                 "a finite number of seconds greater than 0",
+            );
+        }
+        if let Turning::MaxRate {
+            max_turn_rate_rad_s,
+        } = self.turning
+            && !(max_turn_rate_rad_s.is_finite() && max_turn_rate_rad_s > 0.0)
+        {
+            return invalid(
+                "turning.max_turn_rate_rad_s",
+                max_turn_rate_rad_s,
+                "a finite rate of turn greater than 0",
             );
         }
         self.rules.validate().map_err(PlannerError::from)

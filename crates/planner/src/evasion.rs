@@ -13,6 +13,7 @@ use crate::problem::PlanningProblem;
 use crate::safety::min_distance_over;
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::angle;
+use vorrt_jfs::{InstantTurn, Leg, MotionModel, Pose};
 
 /// A course to steer and what it is expected to keep.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -50,44 +51,85 @@ pub fn evasive_course(
     courses: usize,
     clearance_m: f64,
 ) -> EvasiveManeuver {
+    let instant = InstantTurn {
+        max_turn_rad: std::f64::consts::PI,
+    };
+    evasive_leg(problem, horizon_s, courses, clearance_m, &instant).1
+}
+
+/// As [`evasive_course`], for a vessel that turns as `model` says: each
+/// course is judged along the curve sailed to take it (the turn, then the
+/// straight run) for `horizon_s`, and the leg to sail is returned with it.
+#[must_use]
+pub fn evasive_leg<M: MotionModel>(
+    problem: &PlanningProblem,
+    horizon_s: f64,
+    courses: usize,
+    clearance_m: f64,
+    model: &M,
+) -> (Leg, EvasiveManeuver) {
     let own = problem.ownship;
+    let from = Pose {
+        position_m: own.position_m,
+        course_rad: own.course_rad,
+    };
     let tracks: Vec<_> = problem
         .targets
         .iter()
         .map(|target| target.track())
         .collect();
-    let keep = |course_rad: f64| {
-        let velocity = angle::velocity(course_rad, own.speed_mps);
-        tracks
-            .iter()
-            .map(|track| min_distance_over(own.position_m, velocity, track, 0.0, horizon_s))
+    let leg_for = |course_rad: f64| {
+        let mut leg = model.turn_onto(from, course_rad, own.speed_mps, 0.0);
+        leg.straight_m = ((horizon_s - leg.turn_duration_s()).max(0.0)) * own.speed_mps;
+        leg
+    };
+    let keep = |leg: &Leg| {
+        let margin_m = leg.chord_error_m();
+        leg.pieces(0.0)
+            .map(|piece| {
+                tracks
+                    .iter()
+                    .map(|track| {
+                        min_distance_over(
+                            piece.start_m,
+                            piece.velocity_mps,
+                            track,
+                            piece.elapsed_s,
+                            piece.duration_s,
+                        ) - if piece.turning { margin_m } else { 0.0 }
+                    })
+                    .fold(f64::INFINITY, f64::min)
+            })
             .fold(f64::INFINITY, f64::min)
     };
-    let courses = courses.max(1);
-    let spacing = std::f64::consts::TAU / courses as f64;
-    let mut best = EvasiveManeuver {
-        course_rad: own.course_rad,
-        min_distance_m: keep(own.course_rad),
-    };
-    if best.min_distance_m >= clearance_m {
+    let hold = leg_for(own.course_rad);
+    let mut best = (
+        hold,
+        EvasiveManeuver {
+            course_rad: own.course_rad,
+            min_distance_m: keep(&hold),
+        },
+    );
+    if best.1.min_distance_m >= clearance_m {
         return best;
     }
+    let courses = courses.max(1);
+    let spacing = std::f64::consts::TAU / courses as f64;
     // Turns in order of size, starboard first: +s, -s, +2s, -2s, ...
     for step in 1..=courses / 2 {
         for sign in [1.0, -1.0] {
             let course_rad = angle::normalize_2pi(own.course_rad + sign * spacing * step as f64);
-            let min_distance_m = keep(course_rad);
+            let leg = leg_for(course_rad);
+            let min_distance_m = keep(&leg);
+            let maneuver = EvasiveManeuver {
+                course_rad,
+                min_distance_m,
+            };
             if min_distance_m >= clearance_m {
-                return EvasiveManeuver {
-                    course_rad,
-                    min_distance_m,
-                };
+                return (leg, maneuver);
             }
-            if min_distance_m > best.min_distance_m {
-                best = EvasiveManeuver {
-                    course_rad,
-                    min_distance_m,
-                };
+            if min_distance_m > best.1.min_distance_m {
+                best = (leg, maneuver);
             }
         }
     }

@@ -14,6 +14,8 @@
 //! | [`problem`] | [`PlanningProblem`]: ownship, goal, targets and the encounters in force |
 //! | [`vorrt`] | [`Planner`]: Algorithms 1-2, seeded, restartable, bounded |
 //! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
+//! | [`validity`] | [`MotionValidator`]: the one validity check of a [`Leg`](vorrt_jfs::Leg), used by tree growth, simplification and a closed loop; [`EncounterState`] carried along a branch |
+//! | [`simplify`] | [`simplify`](simplify::simplify): a branch into the fewest sailable legs the same validator accepts |
 //! | [`tree`] | [`Tree`](tree::Tree): the node arena and nearest-node search (linear or R*-tree) |
 //! | [`sampler`] | [`Sampler`](sampler::Sampler): ChaCha8 goal-biased sampling |
 //! | [`evasion`] | [`evasive_course`]: the course that keeps farthest from every target, for when no safe path is found |
@@ -28,12 +30,15 @@ pub mod plan;
 pub mod problem;
 pub mod safety;
 pub mod sampler;
+pub mod simplify;
 pub mod tree;
+pub mod validity;
 pub mod vorrt;
 
-pub use config::{NearestIndex, PlannerConfig};
+pub use config::{NearestIndex, PlannerConfig, Turning};
 pub use error::PlannerError;
-pub use evasion::{EvasiveManeuver, evasive_course};
+pub use evasion::{EvasiveManeuver, evasive_course, evasive_leg};
 pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
+pub use validity::{EncounterState, MotionValidator, check_legs};
 pub use vorrt::Planner;

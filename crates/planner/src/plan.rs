@@ -4,6 +4,7 @@
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::{EncounterLatch, ManeuverViolation, VesselState};
+use vorrt_jfs::{Leg, Pose};
 
 /// One point of the planned path.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -187,6 +188,10 @@ pub struct PlanStatistics {
     pub rejections: RejectionCounts,
     /// Times the tree was grown again from the root.
     pub restarts: u64,
+    /// Branches that reached the goal but could not be simplified into legs
+    /// ownship can sail at its rate of turn (each led to a restart).
+    #[serde(default)]
+    pub unsailable_branches: u64,
     /// Wall-clock time spent, seconds (not part of the deterministic output).
     pub elapsed_s: f64,
 }
@@ -194,8 +199,11 @@ pub struct PlanStatistics {
 /// A safe path from ownship's position to its goal.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Plan {
-    /// From the start (first) to the goal (last).
+    /// From the start (first) to the goal (last): where each leg ends.
     pub waypoints: Vec<Waypoint>,
+    /// The legs ownship sails, one between each pair of waypoints: a turn
+    /// (an arc at its rate of turn, or instantaneous) then a straight run.
+    pub legs: Vec<Leg>,
     /// The predicted state of every target at each waypoint's time:
     /// `target_states[waypoint][target]`.
     pub target_states: Vec<Vec<VesselState>>,
@@ -224,35 +232,42 @@ impl Plan {
         }
     }
 
-    /// Ownship's planned position and course at `time_s` (clamped to the plan's span).
+    /// Ownship's planned pose at `time_s`, along the legs as sailed (arcs
+    /// included); clamped to the plan's span. `None` for an empty plan.
+    #[must_use]
+    pub fn pose_at(&self, time_s: f64) -> Option<Pose> {
+        let first = self.waypoints.first()?;
+        let Some(first_leg) = self.legs.first() else {
+            return Some(Pose {
+                position_m: first.position_m,
+                course_rad: first.course_rad,
+            });
+        };
+        if time_s <= first.time_s {
+            return Some(first_leg.pose_at(0.0));
+        }
+        // Waypoint k + 1 ends leg k.
+        let index = self.waypoints[1..]
+            .partition_point(|waypoint| waypoint.time_s < time_s)
+            .min(self.legs.len() - 1);
+        let leg_start_s = self.waypoints[index].time_s;
+        let mut pose = self.legs[index].pose_at(time_s - leg_start_s);
+        if index + 1 == self.legs.len()
+            && time_s >= self.duration_s() + first.time_s
+            && let Some(last) = self.waypoints.last()
+        {
+            // Exactly on the plan's end, whatever the rounding of the legs.
+            pose.position_m = last.position_m;
+        }
+        Some(pose)
+    }
+
+    /// Ownship's planned position and course at `time_s` (clamped to the
+    /// plan's span): [`pose_at`](Self::pose_at) as a pair.
     #[must_use]
     pub fn position_at(&self, time_s: f64) -> Option<(DVec2, f64)> {
-        let first = self.waypoints.first()?;
-        if time_s <= first.time_s || self.waypoints.len() == 1 {
-            let course = self
-                .waypoints
-                .get(1)
-                .map_or(first.course_rad, |next| next.course_rad);
-            return Some((first.position_m, course));
-        }
-        let index = self
-            .waypoints
-            .partition_point(|waypoint| waypoint.time_s < time_s);
-        let Some(next) = self.waypoints.get(index) else {
-            let last = self.waypoints.last()?;
-            return Some((last.position_m, last.course_rad));
-        };
-        let previous = self.waypoints[index - 1];
-        let span = next.time_s - previous.time_s;
-        let fraction = if span > 0.0 {
-            (time_s - previous.time_s) / span
-        } else {
-            1.0
-        };
-        Some((
-            previous.position_m.lerp(next.position_m, fraction),
-            next.course_rad,
-        ))
+        self.pose_at(time_s)
+            .map(|pose| (pose.position_m, pose.course_rad))
     }
 
     /// For each target, every distinct encounter the plan latches with it

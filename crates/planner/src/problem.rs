@@ -39,6 +39,11 @@ pub struct PlanningProblem {
     /// Encounters already in force, one entry per target (a closed loop keeps
     /// them across replans). Empty: the planner latches from the start state.
     pub encounters: Vec<Option<EncounterLatch>>,
+    /// For each encounter carried over in `encounters`, the alteration of
+    /// course from its reference already made, radians (rule 16); empty or
+    /// missing entries count as none.
+    #[serde(default)]
+    pub alterations: Vec<f64>,
 }
 
 impl PlanningProblem {
@@ -51,6 +56,7 @@ impl PlanningProblem {
             goal_m,
             targets,
             encounters: Vec::new(),
+            alterations: Vec::new(),
         }
     }
 

@@ -26,7 +26,9 @@
 use crate::config::PlannerConfig;
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::{CandidateMotion, EncounterLatch, Role, check_alteration, check_motion};
+use vorrt_colregs::{
+    CandidateMotion, EncounterLatch, Role, VesselState, check_alteration, check_motion,
+};
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
 use vorrt_jfs::LinearTrack;
@@ -85,15 +87,55 @@ pub struct SafetyChecker<'a> {
     pub config: &'a PlannerConfig,
     /// Each target's predicted motion from the plan's start.
     pub tracks: &'a [LinearTrack],
-    /// Ownship's length, metres.
-    pub own_length_m: f64,
-    /// Ownship's speed, m/s.
-    pub own_speed_mps: f64,
+    /// Ownship at the plan's start (its length and speed hold along the plan).
+    pub ownship: VesselState,
     /// Where ownship is bound.
     pub goal_m: DVec2,
+    /// The clock at the plan's start, seconds (time stamps of new latches).
+    pub start_time_s: f64,
 }
 
-impl SafetyChecker<'_> {
+impl<'a> SafetyChecker<'a> {
+    /// A checker for one problem.
+    #[must_use]
+    pub fn new(
+        config: &'a PlannerConfig,
+        tracks: &'a [LinearTrack],
+        ownship: VesselState,
+        goal_m: DVec2,
+        start_time_s: f64,
+    ) -> Self {
+        Self {
+            config,
+            tracks,
+            ownship,
+            goal_m,
+            start_time_s,
+        }
+    }
+
+    /// Checks only that every target keeps `d_th` plus `margin_m` from the
+    /// move: the check of a chord of a turn, whose course is transient.
+    ///
+    /// # Errors
+    /// [`RejectionCause::Clearance`] when a target comes nearer.
+    pub fn check_clearance(&self, candidate: &Move, margin_m: f64) -> Result<(), RejectionCause> {
+        let clearance = self.config.clearance_m + margin_m;
+        for track in self.tracks {
+            let during = min_distance_over(
+                candidate.start_m,
+                candidate.velocity_mps,
+                track,
+                candidate.start_elapsed_s,
+                candidate.duration_s,
+            );
+            if during < clearance {
+                return Err(RejectionCause::Clearance);
+            }
+        }
+        Ok(())
+    }
+
     /// Checks one move given the encounters in force at its parent.
     ///
     /// # Errors
@@ -108,7 +150,7 @@ impl SafetyChecker<'_> {
         let clearance = self.config.clearance_m;
         let end_m = candidate.start_m + candidate.velocity_mps * candidate.duration_s;
         let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
-        let to_goal_s = end_m.distance(self.goal_m) / self.own_speed_mps;
+        let to_goal_s = end_m.distance(self.goal_m) / self.ownship.speed_mps;
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
         let giving_way = latches
             .iter()
@@ -117,7 +159,7 @@ impl SafetyChecker<'_> {
         let motion = CandidateMotion {
             position_m: candidate.start_m,
             course_rad: candidate.course_rad,
-            speed_mps: self.own_speed_mps,
+            speed_mps: self.ownship.speed_mps,
             velocity_mps: candidate.velocity_mps,
         };
         for (index, track) in self.tracks.iter().enumerate() {
@@ -129,7 +171,8 @@ impl SafetyChecker<'_> {
                 // Beyond MTD with no encounter, only the segment's clearance
                 // applies, and it cannot fail while the two could not close
                 // the range to d_th even heading straight for each other.
-                let reach = (self.own_speed_mps + target_velocity.length()) * candidate.duration_s;
+                let reach =
+                    (self.ownship.speed_mps + target_velocity.length()) * candidate.duration_s;
                 if range - reach >= clearance {
                     continue;
                 }
@@ -143,7 +186,7 @@ impl SafetyChecker<'_> {
                     candidate.start_m,
                     target_position,
                     target_velocity,
-                    self.own_length_m + track.vessel.length_m,
+                    self.ownship.length_m + track.vessel.length_m,
                     candidate.velocity_mps,
                 )
             {
@@ -194,7 +237,6 @@ impl SafetyChecker<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use vorrt_colregs::VesselState;
     use vorrt_jfs::TargetState;
 
     #[test]

@@ -17,14 +17,16 @@ use crate::config::PlannerConfig;
 use crate::error::PlannerError;
 use crate::plan::{Plan, PlanStatistics, Waypoint};
 use crate::problem::PlanningProblem;
-use crate::safety::{Move, SafetyChecker};
+use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
+use crate::simplify::{SimplifiedLeg, simplify};
 use crate::tree::Tree;
+use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
 use std::time::Instant;
-use vorrt_colregs::{EncounterLatch, VesselState, update_latch};
+use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::LinearTrack;
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose, RateLimitedTurn};
 
 /// How often (in samples) the wall clock is read when a budget is set.
 const CLOCK_EVERY_SAMPLES: u64 = 32;
@@ -58,8 +60,7 @@ pub struct Planner {
     config: PlannerConfig,
     tree: Tree,
     tracks: Vec<LinearTrack>,
-    latch_scratch: Vec<Option<EncounterLatch>>,
-    alteration_scratch: Vec<f64>,
+    scratch: EncounterState,
 }
 
 enum Growth {
@@ -78,8 +79,7 @@ impl Planner {
             config,
             tree: Tree::default(),
             tracks: Vec::new(),
-            latch_scratch: Vec::new(),
-            alteration_scratch: Vec::new(),
+            scratch: EncounterState::default(),
         })
     }
 
@@ -123,6 +123,19 @@ impl Planner {
                 )
             })
             .collect();
+        // The alteration already made for an encounter carried over from a
+        // previous plan (a closed loop passes it), else none.
+        let root_alterations: Vec<f64> = (0..targets)
+            .map(|index| {
+                let carried = problem.encounters.get(index).copied().flatten();
+                match (carried, root_latches[index]) {
+                    (Some(was), Some(now)) if was == now => {
+                        problem.alterations.get(index).copied().unwrap_or(0.0)
+                    }
+                    _ => 0.0,
+                }
+            })
+            .collect();
 
         let margin = DVec2::splat(config.sampling_margin_m);
         let mut sampler = Sampler::new(
@@ -145,7 +158,7 @@ impl Planner {
                 problem.start_time_s,
                 0,
                 &root_latches,
-                &vec![0.0; targets],
+                &root_alterations,
             );
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
@@ -165,8 +178,14 @@ impl Planner {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                statistics.elapsed_s = started.elapsed().as_secs_f64();
-                return Ok(self.extract(problem, node, statistics));
+                match self.extract(problem, node, &mut statistics) {
+                    Some(mut plan) => {
+                        plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
+                        return Ok(plan);
+                    }
+                    // No sailable simplification of this branch: grow anew.
+                    None => statistics.unsailable_branches += 1,
+                }
             }
         }
         statistics.nodes = total_nodes;
@@ -188,12 +207,15 @@ impl Planner {
     ) -> Result<Growth, PlannerError> {
         let config = self.config;
         let own = problem.ownship;
-        let checker = SafetyChecker {
-            config: &self.config,
-            tracks: &self.tracks,
-            own_length_m: own.length_m,
-            own_speed_mps: own.speed_mps,
-            goal_m: problem.goal_m,
+        let checker = SafetyChecker::new(
+            &self.config,
+            &self.tracks,
+            own,
+            problem.goal_m,
+            problem.start_time_s,
+        );
+        let model = InstantTurn {
+            max_turn_rad: config.max_turn_per_step_rad,
         };
         let mut accepted = 0usize;
         let mut samples = 0usize;
@@ -230,38 +252,32 @@ impl Planner {
                 statistics.rejections.record(cause);
                 continue;
             }
-            let candidate = steer(
-                &self.tree,
-                parent,
-                sample,
-                &config,
-                own.speed_mps,
-                problem.start_time_s,
-            );
-            let Some(candidate) = candidate else {
+            let from = Pose {
+                position_m: self.tree.positions[parent as usize],
+                course_rad: self.tree.courses[parent as usize],
+            };
+            let Some(leg) = model.steer(from, sample, own.speed_mps, config.step_m) else {
                 continue;
             };
-            if let Err(cause) = checker.check(
-                &candidate,
+            let start_elapsed_s = self.tree.times[parent as usize] - problem.start_time_s;
+            self.scratch.set(
                 self.tree.latches_of(parent),
                 self.tree.alterations_of(parent),
-            ) {
+            );
+            if let Err(cause) = checker.validate(&leg, start_elapsed_s, &mut self.scratch) {
                 statistics.rejections.record(cause);
                 if to_goal {
                     self.tree.goal_rejections[parent as usize] = Some(cause);
                 }
                 continue;
             }
-            let node = add_node(
-                &mut self.tree,
-                &mut self.latch_scratch,
-                &mut self.alteration_scratch,
-                &self.tracks,
-                &own,
+            let node = self.tree.push(
+                leg.end_m(),
+                leg.course_rad,
+                problem.start_time_s + start_elapsed_s + leg.duration_s(),
                 parent,
-                &candidate,
-                problem.start_time_s,
-                &config,
+                &self.scratch.latches,
+                &self.scratch.alterations,
             );
             accepted += 1;
             let position = self.tree.positions[node as usize];
@@ -271,34 +287,27 @@ impl Planner {
             }
             if to_goal <= config.goal_tolerance_m {
                 // The final segment onto the goal, checked like any other.
-                let offset = problem.goal_m - position;
-                let final_move = Move {
-                    start_m: position,
-                    start_elapsed_s: self.tree.times[node as usize] - problem.start_time_s,
-                    course_rad: angle::unit_to_course(offset),
-                    velocity_mps: offset / to_goal * own.speed_mps,
-                    duration_s: to_goal / own.speed_mps,
-                };
-                match checker.check(
-                    &final_move,
-                    self.tree.latches_of(node),
-                    self.tree.alterations_of(node),
-                ) {
+                let final_leg = Leg::straight(
+                    position,
+                    angle::unit_to_course(problem.goal_m - position),
+                    to_goal,
+                    own.speed_mps,
+                );
+                let final_elapsed_s = self.tree.times[node as usize] - problem.start_time_s;
+                self.scratch
+                    .set(self.tree.latches_of(node), self.tree.alterations_of(node));
+                match checker.validate(&final_leg, final_elapsed_s, &mut self.scratch) {
                     Ok(()) => {
-                        let goal = add_node(
-                            &mut self.tree,
-                            &mut self.latch_scratch,
-                            &mut self.alteration_scratch,
-                            &self.tracks,
-                            &own,
-                            node,
-                            &final_move,
-                            problem.start_time_s,
-                            &config,
-                        );
                         // Exactly on the goal, whatever the rounding of
                         // start + velocity × duration.
-                        self.tree.positions[goal as usize] = problem.goal_m;
+                        let goal = self.tree.push(
+                            problem.goal_m,
+                            final_leg.course_rad,
+                            problem.start_time_s + final_elapsed_s + final_leg.duration_s(),
+                            node,
+                            &self.scratch.latches,
+                            &self.scratch.alterations,
+                        );
                         return Ok(Growth::Reached(goal));
                     }
                     Err(cause) => statistics.rejections.record(cause),
@@ -308,121 +317,119 @@ impl Planner {
         Ok(Growth::Exhausted)
     }
 
-    fn extract(&self, problem: &PlanningProblem, node: u32, statistics: PlanStatistics) -> Plan {
+    /// The plan along the branch to `node`: the branch itself for
+    /// instantaneous turns, else its simplification into sailable legs
+    /// (`None` when there is none).
+    fn extract(
+        &self,
+        problem: &PlanningProblem,
+        node: u32,
+        statistics: &mut PlanStatistics,
+    ) -> Option<Plan> {
         let branch = self.tree.branch(node);
-        let mut waypoints = Vec::with_capacity(branch.len());
-        let mut target_states = Vec::with_capacity(branch.len());
-        let mut encounters = Vec::with_capacity(branch.len());
-        for &index in &branch {
-            let time_s = self.tree.times[index as usize];
-            waypoints.push(Waypoint {
+        let own = problem.ownship;
+        let rate = self
+            .config
+            .turning
+            .max_turn_rate_rad_s(own.length_m, own.speed_mps);
+        let legs: Vec<SimplifiedLeg> = match rate {
+            None => branch
+                .windows(2)
+                .map(|pair| {
+                    let (from, to) = (pair[0] as usize, pair[1] as usize);
+                    let length_m = self.tree.positions[from].distance(self.tree.positions[to]);
+                    let mut leg = Leg::straight(
+                        self.tree.positions[from],
+                        self.tree.courses[to],
+                        length_m,
+                        own.speed_mps,
+                    );
+                    leg.start_course_rad = self.tree.courses[from];
+                    leg.turn_rad =
+                        angle::signed_turn(self.tree.courses[from], self.tree.courses[to]);
+                    SimplifiedLeg {
+                        leg,
+                        end_elapsed_s: self.tree.times[to] - problem.start_time_s,
+                        state: EncounterState {
+                            latches: self.tree.latches_of(pair[1]).to_vec(),
+                            alterations: self.tree.alterations_of(pair[1]).to_vec(),
+                        },
+                    }
+                })
+                .collect(),
+            Some(rate) => {
+                let checker = SafetyChecker::new(
+                    &self.config,
+                    &self.tracks,
+                    own,
+                    problem.goal_m,
+                    problem.start_time_s,
+                );
+                let points: Vec<DVec2> = branch[1..]
+                    .iter()
+                    .map(|&index| self.tree.positions[index as usize])
+                    .collect();
+                let root = EncounterState {
+                    latches: self.tree.latches_of(0).to_vec(),
+                    alterations: self.tree.alterations_of(0).to_vec(),
+                };
+                simplify(
+                    &RateLimitedTurn::from_rate(own.speed_mps, rate),
+                    &checker,
+                    Pose {
+                        position_m: own.position_m,
+                        course_rad: own.course_rad,
+                    },
+                    own.speed_mps,
+                    &points,
+                    &root,
+                )?
+            }
+        };
+        let mut waypoints = Vec::with_capacity(legs.len() + 1);
+        waypoints.push(Waypoint {
+            position_m: own.position_m,
+            time_s: problem.start_time_s,
+            course_rad: self.tree.courses[0],
+        });
+        if rate.is_none() {
+            // The branch itself, exactly as the tree holds it.
+            waypoints.extend(branch[1..].iter().map(|&index| Waypoint {
                 position_m: self.tree.positions[index as usize],
-                time_s,
+                time_s: self.tree.times[index as usize],
                 course_rad: self.tree.courses[index as usize],
-            });
-            let elapsed = time_s - problem.start_time_s;
-            target_states.push(
+            }));
+        } else {
+            waypoints.extend(legs.iter().enumerate().map(|(index, leg)| Waypoint {
+                // The plan ends exactly on the goal.
+                position_m: if index + 1 == legs.len() {
+                    problem.goal_m
+                } else {
+                    leg.leg.end_m()
+                },
+                time_s: problem.start_time_s + leg.end_elapsed_s,
+                course_rad: leg.leg.course_rad,
+            }));
+        }
+        let target_states = waypoints
+            .iter()
+            .map(|waypoint| {
+                let elapsed_s = waypoint.time_s - problem.start_time_s;
                 self.tracks
                     .iter()
-                    .map(|track| track.state_at(elapsed))
-                    .collect(),
-            );
-            encounters.push(self.tree.latches_of(index).to_vec());
-        }
-        Plan {
+                    .map(|track| track.state_at(elapsed_s))
+                    .collect()
+            })
+            .collect();
+        let encounters = std::iter::once(self.tree.latches_of(0).to_vec())
+            .chain(legs.iter().map(|leg| leg.state.latches.clone()))
+            .collect();
+        Some(Plan {
             waypoints,
+            legs: legs.into_iter().map(|leg| leg.leg).collect(),
             target_states,
             encounters,
-            statistics,
-        }
+            statistics: *statistics,
+        })
     }
-}
-
-/// The joint forward step's ownship part: up to `d'` from `parent` toward
-/// `sample`, with the course change bounded. `None` when the sample is the
-/// parent itself.
-fn steer(
-    tree: &Tree,
-    parent: u32,
-    sample: DVec2,
-    config: &PlannerConfig,
-    speed_mps: f64,
-    start_time_s: f64,
-) -> Option<Move> {
-    let start_m = tree.positions[parent as usize];
-    let offset = sample - start_m;
-    let distance = offset.length();
-    if distance == 0.0 {
-        return None;
-    }
-    let parent_course = tree.courses[parent as usize];
-    let wanted = angle::unit_to_course(offset);
-    let turn = angle::signed_turn(parent_course, wanted);
-    let limit = config.max_turn_per_step_rad;
-    let (course_rad, length_m) = if turn.abs() <= limit {
-        (wanted, distance.min(config.step_m))
-    } else {
-        (
-            angle::normalize_2pi(parent_course + limit.copysign(turn)),
-            config.step_m,
-        )
-    };
-    Some(Move {
-        start_m,
-        start_elapsed_s: tree.times[parent as usize] - start_time_s,
-        course_rad,
-        velocity_mps: angle::velocity(course_rad, speed_mps),
-        duration_s: length_m / speed_mps,
-    })
-}
-
-/// Adds the node a checked move ends in, updating each target's encounter
-/// latch and the alteration made for it (rule 16).
-#[allow(clippy::too_many_arguments)]
-fn add_node(
-    tree: &mut Tree,
-    scratch: &mut Vec<Option<EncounterLatch>>,
-    alterations: &mut Vec<f64>,
-    tracks: &[LinearTrack],
-    own: &VesselState,
-    parent: u32,
-    candidate: &Move,
-    start_time_s: f64,
-    config: &PlannerConfig,
-) -> u32 {
-    let end_m = candidate.start_m + candidate.velocity_mps * candidate.duration_s;
-    let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
-    let time_s = start_time_s + end_elapsed_s;
-    let own_then = VesselState {
-        position_m: end_m,
-        course_rad: candidate.course_rad,
-        ..*own
-    };
-    scratch.clear();
-    scratch.extend_from_slice(tree.latches_of(parent));
-    alterations.clear();
-    alterations.extend_from_slice(tree.alterations_of(parent));
-    for ((latch, altered), track) in scratch.iter_mut().zip(alterations.iter_mut()).zip(tracks) {
-        let before = *latch;
-        *latch = update_latch(
-            before,
-            &own_then,
-            &track.state_at(end_elapsed_s),
-            time_s,
-            &config.rules,
-        );
-        *altered = match (*latch, before) {
-            (Some(now), Some(was)) if now == was => altered
-                .max(angle::signed_turn(now.reference_course_rad, candidate.course_rad).abs()),
-            _ => 0.0,
-        };
-    }
-    tree.push(
-        end_m,
-        candidate.course_rad,
-        time_s,
-        parent,
-        scratch,
-        alterations,
-    )
 }

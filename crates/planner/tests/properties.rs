@@ -104,28 +104,72 @@ fn encounter() -> impl Strategy<Value = Case> {
         )
 }
 
-/// The smallest distance between the planned path and the target's predicted
-/// motion, segment by segment, with the geometry crate's CPA.
+/// Every `SAMPLE_S` seconds the plan is sampled as sailed (arcs included).
+const SAMPLE_S: f64 = 1.0;
+
+/// Ownship's pose every `SAMPLE_S` along the plan, from its own closed-form
+/// legs: `(time, position, course)`.
+fn sailed(plan: &Plan) -> Vec<(f64, DVec2, f64)> {
+    let first = plan.waypoints[0].time_s;
+    let last = plan.waypoints.last().unwrap().time_s;
+    let steps = ((last - first) / SAMPLE_S).ceil() as usize;
+    (0..=steps)
+        .map(|step| {
+            let time = (first + step as f64 * SAMPLE_S).min(last);
+            let (position, course) = plan.position_at(time).unwrap();
+            (time, position, course)
+        })
+        .collect()
+}
+
+/// The smallest distance between the sailed path and the target's predicted
+/// motion: between consecutive samples both move straight (ownship along the
+/// chord, which lies within `R (1 - cos(ω SAMPLE_S / 2))`, a few millimetres,
+/// of its arc), and the geometry crate's CPA gives the closest approach.
 fn min_clearance(plan: &Plan, target: &TargetState, start_time_s: f64) -> f64 {
-    plan.waypoints
+    sailed(plan)
         .windows(2)
         .map(|pair| {
-            let (from, to) = (pair[0], pair[1]);
-            let duration = to.time_s - from.time_s;
-            let target_then = target.predict(from.time_s - start_time_s).vessel;
+            let ((from_s, from_m, _), (to_s, to_m, _)) = (pair[0], pair[1]);
+            let duration = to_s - from_s;
+            let target_then = target.predict(from_s - start_time_s).vessel;
             let own_velocity = if duration > 0.0 {
-                (to.position_m - from.position_m) / duration
+                (to_m - from_m) / duration
             } else {
                 DVec2::ZERO
             };
             cpa_clamped(
-                from.position_m - target_then.position_m,
+                from_m - target_then.position_m,
                 own_velocity - target_then.velocity_mps(),
                 duration.max(0.0),
             )
             .distance_m
         })
         .fold(f64::INFINITY, f64::min)
+}
+
+/// The largest rate of turn along the sailed path, radians per second.
+fn max_turn_rate(plan: &Plan) -> f64 {
+    sailed(plan)
+        .windows(2)
+        .filter(|pair| pair[1].0 > pair[0].0)
+        .map(|pair| angle::signed_turn(pair[0].2, pair[1].2).abs() / (pair[1].0 - pair[0].0))
+        .fold(0.0, f64::max)
+}
+
+/// How often the direction of turning reverses along the plan's legs
+/// (turns under 2°, undetectable, are left out).
+fn turn_reversals(plan: &Plan) -> usize {
+    let turns: Vec<f64> = plan
+        .legs
+        .iter()
+        .map(|leg| leg.turn_rad)
+        .filter(|turn| turn.abs() > 2f64.to_radians())
+        .collect();
+    turns
+        .windows(2)
+        .filter(|pair| pair[0].signum() != pair[1].signum())
+        .count()
 }
 
 /// The first course change along the plan, signed (positive to starboard).
@@ -210,6 +254,16 @@ proptest! {
             "{:?}: clearance {}", case.kind, clearance
         );
         prop_assert_eq!(plan.waypoints.last().unwrap().position_m, problem.goal_m);
+        // (1b) The path is sailable: the rate of turn never exceeds the limit.
+        let limit = planner.config().turning
+            .max_turn_rate_rad_s(problem.ownship.length_m, problem.ownship.speed_mps)
+            .unwrap();
+        let rate = max_turn_rate(&plan);
+        prop_assert!(rate <= limit * (1.0 + 1e-6), "rate of turn {}°/s > {}°/s", rate.to_degrees(), limit.to_degrees());
+        // (1c) One alteration and one return (to starboard, back to port,
+        // and at most a final turn onto the goal): no zig-zag.
+        prop_assert!(turn_reversals(&plan) <= 2, "{:?}: {} reversals in {:?}", case.kind, turn_reversals(&plan),
+            plan.legs.iter().map(|leg| leg.turn_rad.to_degrees().round()).collect::<Vec<_>>());
         // The rules are checked when the encounter is in force from the start.
         let in_force = plan.encounters[0][0].map(|latch| latch.encounter);
         match (case.kind, in_force) {

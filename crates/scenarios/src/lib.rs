@@ -67,5 +67,7 @@ pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
-pub use simulation::{PlanEvent, PlanTrigger, SimulationRecord, simulate, simulate_with};
+pub use simulation::{
+    PlanCheck, PlanEvent, PlanTrigger, SimulationRecord, simulate, simulate_with,
+};
 pub use validate::{MAX_EXTENT_NM, MAX_LENGTH_M, MAX_SIMULATION_STEPS, MAX_SPEED_KN, MAX_TARGETS};

@@ -25,10 +25,10 @@ use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, Role, RuleParameters, VesselState, update_latch};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
-use vorrt_jfs::TargetState;
-use vorrt_planner::safety::min_distance_over;
+use vorrt_jfs::{InstantTurn, Leg, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
-    Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, evasive_course,
+    Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, check_legs,
+    evasive_leg,
 };
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
@@ -90,6 +90,16 @@ pub struct PlanEvent {
     pub evasive_course_deg: Option<f64>,
 }
 
+/// A replanning trigger after which the plan in force passed the planner's
+/// validity check again and was kept.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PlanCheck {
+    /// Simulation time of the check, seconds.
+    pub time_s: f64,
+    /// What triggered it.
+    pub trigger: PlanTrigger,
+}
+
 /// Everything that happened in one closed-loop run.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SimulationRecord {
@@ -109,6 +119,17 @@ pub struct SimulationRecord {
     pub targets: Vec<Vec<VesselState>>,
     /// Every planner call.
     pub plans: Vec<PlanEvent>,
+    /// Every time a replanning trigger fired but the plan in force still
+    /// passed the planner's validity check, so ownship kept it.
+    #[serde(default)]
+    pub plans_kept: Vec<PlanCheck>,
+    /// The planner configuration the run was made with (d_th and the rules
+    /// that judge it come from here).
+    pub config: PlannerConfig,
+    /// Ownship's largest rate of turn, radians per second (`None`:
+    /// instantaneous turns, the paper's model).
+    #[serde(default)]
+    pub max_turn_rate_rad_s: Option<f64>,
     /// Whether ownship reached its goal.
     pub reached_goal: bool,
     /// When it did, seconds.
@@ -116,6 +137,24 @@ pub struct SimulationRecord {
 }
 
 impl SimulationRecord {
+    /// Every replanning trigger of the run with its time, whether it led to
+    /// a planner call or the plan in force was kept, in time order.
+    #[must_use]
+    pub fn triggers(&self) -> Vec<(f64, PlanTrigger)> {
+        let mut all: Vec<(f64, PlanTrigger)> = self
+            .plans
+            .iter()
+            .map(|event| (event.time_s, event.trigger))
+            .chain(
+                self.plans_kept
+                    .iter()
+                    .map(|kept| (kept.time_s, kept.trigger)),
+            )
+            .collect();
+        all.sort_by(|a, b| a.0.total_cmp(&b.0));
+        all
+    }
+
     /// Planner calls that returned a plan.
     #[must_use]
     pub fn plans_made(&self) -> usize {
@@ -354,7 +393,8 @@ impl SimulatedTarget {
 #[derive(Debug)]
 struct ActivePlan {
     plan: Plan,
-    start_time_s: f64,
+    /// When `predicted` was taken, seconds.
+    predicted_at_s: f64,
     predicted: Vec<TargetState>,
     /// Per target, every encounter the plan expects to have with it.
     anticipated: Vec<Vec<EncounterLatch>>,
@@ -374,17 +414,40 @@ struct ActivePlan {
 /// [`ScenarioError`] when the scenario's planner settings are invalid.
 pub fn simulate(scenario: &Scenario, seed: u64) -> Result<SimulationRecord, ScenarioError> {
     let config = scenario.planner_config()?;
-    Ok(simulate_with(scenario, &config, seed))
+    simulate_with(scenario, &config, seed)
 }
 
 /// As [`simulate`], with a planner configuration given by the caller.
-#[must_use]
-pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> SimulationRecord {
+///
+/// # Errors
+/// [`ScenarioError::Invalid`] (field `planner`) when `config` is invalid.
+pub fn simulate_with(
+    scenario: &Scenario,
+    config: &PlannerConfig,
+    seed: u64,
+) -> Result<SimulationRecord, ScenarioError> {
+    let mut planner = Planner::new(*config).map_err(|error| ScenarioError::Invalid {
+        file: scenario.source.clone(),
+        field: "planner".into(),
+        problem: error.to_string(),
+    })?;
     let settings = scenario.simulation;
     let dt = settings.time_step_s;
     let max_duration_s = scenario.max_duration_s();
     let goal_m = scenario.ownship_goal_m();
     let mut own = scenario.ownship_state();
+    let max_turn_rate_rad_s = config
+        .turning
+        .max_turn_rate_rad_s(own.length_m, own.speed_mps);
+    // Ownship sails every plan, and every evasive turn, with the planner's
+    // own motion model, so the recorded track is the curve the planner
+    // checked.
+    let model = match max_turn_rate_rad_s {
+        Some(rate) => OwnshipModel::RateLimited(RateLimitedTurn::from_rate(own.speed_mps, rate)),
+        None => OwnshipModel::Instant(InstantTurn {
+            max_turn_rad: std::f64::consts::PI,
+        }),
+    };
     let mut targets: Vec<SimulatedTarget> = scenario
         .targets
         .iter()
@@ -392,7 +455,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
         .map(|(index, spec)| SimulatedTarget::new(spec, index, seed))
         .collect();
     let mut latches: Vec<Option<EncounterLatch>> = vec![None; targets.len()];
-    let mut planner = Planner::new(*config).ok();
+    let mut alterations: Vec<f64> = vec![0.0; targets.len()];
     let mut record = SimulationRecord {
         scenario: scenario.name.clone(),
         seed,
@@ -406,6 +469,9 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
             .collect(),
         targets: vec![Vec::new(); targets.len()],
         plans: Vec::new(),
+        plans_kept: Vec::new(),
+        config: *config,
+        max_turn_rate_rad_s,
         reached_goal: false,
         arrival_time_s: None,
     };
@@ -415,8 +481,17 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
     let mut time_s = 0.0;
     let mut step = 0usize;
     loop {
-        for (latch, target) in latches.iter_mut().zip(&targets) {
-            *latch = update_latch(*latch, &own, &target.state.vessel, time_s, &config.rules);
+        for ((latch, altered), target) in latches.iter_mut().zip(&mut alterations).zip(&targets) {
+            let before = *latch;
+            *latch = update_latch(before, &own, &target.state.vessel, time_s, &config.rules);
+            // The alteration made for an encounter, as the planner counts it
+            // along a branch (rule 16).
+            *altered = match (*latch, before) {
+                (Some(now), Some(was)) if now == was => {
+                    altered.max(signed_turn(now.reference_course_rad, own.course_rad).abs())
+                }
+                _ => 0.0,
+            };
         }
         record.times_s.push(time_s);
         record.ownship.push(own);
@@ -443,7 +518,7 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
         if trigger.is_none() && time_s >= retry_at_s {
             trigger = Some(PlanTrigger::Retry);
         }
-        if let (Some(why), Some(planner)) = (trigger.take(), planner.as_mut()) {
+        if let Some(why) = trigger.take() {
             let predicted: Vec<TargetState> =
                 targets.iter().map(SimulatedTarget::announced).collect();
             let problem = PlanningProblem {
@@ -452,69 +527,47 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
                 goal_m,
                 targets: predicted.clone(),
                 encounters: latches.clone(),
+                alterations: alterations.clone(),
             };
-            let seed_now = call_seed(seed, record.plans.len());
-            let started = Instant::now();
-            match planner.plan(&problem, seed_now) {
-                Ok(plan) => {
-                    retry_at_s = f64::INFINITY;
-                    record.plans.push(PlanEvent {
-                        time_s,
-                        trigger: why,
-                        seed: seed_now,
-                        succeeded: true,
-                        error: None,
-                        statistics: plan.statistics,
-                        waypoints: plan.waypoints.clone(),
-                        evasive_course_deg: None,
-                    });
-                    let anticipated = plan.anticipated_encounters();
-                    active = Some(ActivePlan {
-                        plan,
-                        start_time_s: time_s,
-                        predicted,
-                        anticipated,
-                    });
-                }
-                Err(error) => {
-                    retry_at_s = time_s + RETRY_AFTER_S;
-                    let statistics = match &error {
-                        vorrt_planner::PlannerError::NoSafePath { statistics }
-                        | vorrt_planner::PlannerError::BudgetExhausted { statistics, .. } => {
-                            **statistics
+            // The plan in force is kept while the planner's own validity
+            // check still accepts the rest of it, as the targets are now
+            // predicted and with the encounters now in force: a new plan
+            // would only be a different random branch, and changing course
+            // without need is what rule 8(b) warns against.
+            let still_valid = why != PlanTrigger::Retry
+                && active.as_ref().is_some_and(|active| {
+                    check_legs(config, &problem, &remaining_legs(&active.plan, time_s)).is_ok()
+                });
+            if still_valid {
+                if let Some(active) = active.as_mut() {
+                    active.predicted = predicted;
+                    active.predicted_at_s = time_s;
+                    for (expected, latch) in active.anticipated.iter_mut().zip(&latches) {
+                        if let Some(latch) = latch
+                            && !expected.contains(latch)
+                        {
+                            expected.push(*latch);
                         }
-                        _ => PlanStatistics {
-                            elapsed_s: started.elapsed().as_secs_f64(),
-                            ..PlanStatistics::default()
-                        },
-                    };
-                    let keep_plan = active.as_ref().is_some_and(|active| {
-                        plan_keeps_clearance(&active.plan, &problem, config.clearance_m)
-                    });
-                    let evasive_course_deg = if keep_plan {
-                        None
-                    } else {
-                        let evasion = evasive_course(
-                            &problem,
-                            EVASION_HORIZON_S,
-                            EVASION_COURSES,
-                            config.clearance_m,
-                        );
-                        active = None;
-                        own.course_rad = evasion.course_rad;
-                        Some(evasion.course_rad.to_degrees())
-                    };
-                    record.plans.push(PlanEvent {
-                        time_s,
-                        trigger: why,
-                        seed: seed_now,
-                        succeeded: false,
-                        error: Some(error.to_string()),
-                        statistics,
-                        waypoints: Vec::new(),
-                        evasive_course_deg,
-                    });
+                    }
                 }
+                record.plans_kept.push(PlanCheck {
+                    time_s,
+                    trigger: why,
+                });
+            } else {
+                plan_now(
+                    &mut planner,
+                    &problem,
+                    &model,
+                    PlanCall {
+                        why,
+                        seed: call_seed(seed, record.plans.len()),
+                        clearance_m: config.clearance_m,
+                    },
+                    &mut active,
+                    &mut record.plans,
+                    &mut retry_at_s,
+                );
             }
         }
         // Advance one step.
@@ -531,38 +584,150 @@ pub fn simulate_with(scenario: &Scenario, config: &PlannerConfig, seed: u64) -> 
         }
         time_s = next_time_s;
     }
-    record
+    Ok(record)
 }
 
-/// Whether the rest of `plan`, from the problem's time on, keeps `clearance_m`
-/// from every target as the problem now predicts it.
-fn plan_keeps_clearance(plan: &Plan, problem: &PlanningProblem, clearance_m: f64) -> bool {
-    let now_s = problem.start_time_s;
-    let tracks: Vec<_> = problem.targets.iter().map(TargetState::track).collect();
-    plan.waypoints.windows(2).all(|pair| {
-        let (from, to) = (pair[0], pair[1]);
-        if to.time_s <= now_s {
-            return true;
-        }
-        let start_s = from.time_s.max(now_s);
-        let duration_s = to.time_s - start_s;
-        if duration_s <= 0.0 {
-            return true;
-        }
-        let velocity = (to.position_m - from.position_m) / (to.time_s - from.time_s);
-        let start_m = from.position_m + velocity * (start_s - from.time_s);
-        tracks.iter().all(|track| {
-            min_distance_over(start_m, velocity, track, start_s - now_s, duration_s) >= clearance_m
-        })
-    })
+/// What one planner call is for.
+struct PlanCall {
+    why: PlanTrigger,
+    seed: u64,
+    clearance_m: f64,
 }
 
-/// Ownship's state at `time_s` along `plan` (at the goal once the plan ends).
+/// Calls the planner on `problem` and puts what comes of it in force: the
+/// new plan, or on failure the previous plan if the planner's validity check
+/// still accepts it, or else the evasive leg (sailed with `model`).
+fn plan_now(
+    planner: &mut Planner,
+    problem: &PlanningProblem,
+    model: &OwnshipModel,
+    call: PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+    retry_at_s: &mut f64,
+) {
+    let time_s = problem.start_time_s;
+    let started = Instant::now();
+    match planner.plan(problem, call.seed) {
+        Ok(plan) => {
+            *retry_at_s = f64::INFINITY;
+            plans.push(PlanEvent {
+                time_s,
+                trigger: call.why,
+                seed: call.seed,
+                succeeded: true,
+                error: None,
+                statistics: plan.statistics,
+                waypoints: plan.waypoints.clone(),
+                evasive_course_deg: None,
+            });
+            let anticipated = plan.anticipated_encounters();
+            *active = Some(ActivePlan {
+                plan,
+                predicted_at_s: time_s,
+                predicted: problem.targets.clone(),
+                anticipated,
+            });
+        }
+        Err(error) => {
+            *retry_at_s = time_s + RETRY_AFTER_S;
+            let statistics = match &error {
+                vorrt_planner::PlannerError::NoSafePath { statistics }
+                | vorrt_planner::PlannerError::BudgetExhausted { statistics, .. } => **statistics,
+                _ => PlanStatistics {
+                    elapsed_s: started.elapsed().as_secs_f64(),
+                    ..PlanStatistics::default()
+                },
+            };
+            let keep_plan = active.as_ref().is_some_and(|active| {
+                check_legs(
+                    planner.config(),
+                    problem,
+                    &remaining_legs(&active.plan, time_s),
+                )
+                .is_ok()
+            });
+            let evasive_course_deg = if keep_plan {
+                None
+            } else {
+                let (leg, evasion) = evasive_leg(
+                    problem,
+                    EVASION_HORIZON_S,
+                    EVASION_COURSES,
+                    call.clearance_m,
+                    model,
+                );
+                *active = Some(ActivePlan {
+                    plan: leg_plan(leg, time_s),
+                    predicted_at_s: time_s,
+                    predicted: problem.targets.clone(),
+                    anticipated: vec![Vec::new(); problem.targets.len()],
+                });
+                Some(evasion.course_rad.to_degrees())
+            };
+            plans.push(PlanEvent {
+                time_s,
+                trigger: call.why,
+                seed: call.seed,
+                succeeded: false,
+                error: Some(error.to_string()),
+                statistics,
+                waypoints: Vec::new(),
+                evasive_course_deg,
+            });
+        }
+    }
+}
+
+/// A plan of one leg starting at `time_s` (the evasive manoeuvre).
+fn leg_plan(leg: Leg, time_s: f64) -> Plan {
+    Plan {
+        waypoints: vec![
+            Waypoint {
+                position_m: leg.start_m,
+                time_s,
+                course_rad: leg.start_course_rad,
+            },
+            Waypoint {
+                position_m: leg.end_m(),
+                time_s: time_s + leg.duration_s(),
+                course_rad: leg.course_rad,
+            },
+        ],
+        legs: vec![leg],
+        target_states: Vec::new(),
+        encounters: Vec::new(),
+        statistics: PlanStatistics::default(),
+    }
+}
+
+/// The legs of `plan` still to sail from `time_s` on, the one under way cut
+/// at ownship's present pose.
+fn remaining_legs(plan: &Plan, time_s: f64) -> Vec<Leg> {
+    let mut legs = Vec::new();
+    for (index, leg) in plan.legs.iter().enumerate() {
+        let (start_s, end_s) = (
+            plan.waypoints[index].time_s,
+            plan.waypoints[index + 1].time_s,
+        );
+        if end_s <= time_s {
+            continue;
+        }
+        if start_s < time_s {
+            legs.push(leg.remainder(time_s - start_s));
+        } else {
+            legs.push(*leg);
+        }
+    }
+    legs
+}
+
+/// Ownship's state at `time_s` along `plan` (at its end once the plan ends).
 fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState {
-    match plan.position_at(time_s) {
-        Some((position_m, course_rad)) => VesselState {
-            position_m,
-            course_rad,
+    match plan.pose_at(time_s) {
+        Some(pose) => VesselState {
+            position_m: pose.position_m,
+            course_rad: pose.course_rad,
             ..*own
         },
         None => own.advanced(0.0),
@@ -578,7 +743,7 @@ fn replan_trigger(
     deviation_m: f64,
 ) -> Option<PlanTrigger> {
     let active = active?;
-    let elapsed_s = time_s - active.start_time_s;
+    let elapsed_s = time_s - active.predicted_at_s;
     for (index, (target, predicted)) in targets.iter().zip(&active.predicted).enumerate() {
         let expected = predicted.predict(elapsed_s).vessel.position_m;
         if expected.distance(target.state.vessel.position_m) > deviation_m {

@@ -42,16 +42,12 @@ fn sudden_turn_triggers_a_replan_and_ownship_keeps_clear() {
     );
     let record = simulate(&scenario, 1).expect("valid settings");
     let off_prediction: Vec<_> = record
-        .plans
-        .iter()
-        .filter(|plan| plan.trigger == PlanTrigger::TargetOffPrediction { target: 0 })
+        .triggers()
+        .into_iter()
+        .filter(|(_, trigger)| *trigger == PlanTrigger::TargetOffPrediction { target: 0 })
         .collect();
-    assert!(
-        !off_prediction.is_empty(),
-        "{:?}",
-        record.plans.iter().map(|p| p.trigger).collect::<Vec<_>>()
-    );
-    assert!(off_prediction[0].time_s > 300.0);
+    assert!(!off_prediction.is_empty(), "{:?}", record.triggers());
+    assert!(off_prediction[0].0 > 300.0);
     // The target holds 270 until the turn and 210 from it on.
     let courses = courses_deg(&record);
     for (time_s, course) in record.times_s.iter().zip(&courses) {
@@ -80,9 +76,9 @@ fn sudden_turn_into_a_head_on_target_is_survived() {
     let record = simulate(&scenario, 2).expect("valid settings");
     assert!(
         record
-            .plans
+            .triggers()
             .iter()
-            .any(|plan| plan.trigger == PlanTrigger::TargetOffPrediction { target: 0 })
+            .any(|(_, trigger)| *trigger == PlanTrigger::TargetOffPrediction { target: 0 })
     );
     let evaluation = evaluate(&scenario, &record);
     assert!(evaluation.reached_goal && evaluation.clearance_kept);
@@ -142,9 +138,9 @@ fn colregs_target_gives_way_head_on_and_stands_on_when_crossed() {
     );
     assert!(
         record
-            .plans
+            .triggers()
             .iter()
-            .any(|plan| plan.trigger == PlanTrigger::TargetOffPrediction { target: 0 })
+            .any(|(_, trigger)| *trigger == PlanTrigger::TargetOffPrediction { target: 0 })
     );
     let evaluation = evaluate(&scenario, &record);
     assert!(evaluation.reached_goal && evaluation.clearance_kept);

@@ -1,0 +1,213 @@
+//! Path simplification: a branch of the tree becomes the fewest legs ownship
+//! can sail that pass the same validity check.
+//!
+//! The tree's branch is a chain of `d'`-long steps with a course change at
+//! every node: safe, but a zig-zag no mariner would steer and no observer
+//! could read (rule 8(b): a succession of small alterations should be
+//! avoided). As OMPL's path simplifier does, each shortcut is re-validated by
+//! the planner's own [`MotionValidator`], never by a weaker test; and each
+//! shortcut is a [`Leg`] of the [`MotionModel`] ownship really sails (a turn
+//! at its rate of turn, then a straight run), so the curve judged is the curve
+//! sailed. Because the legs are timed (ownship arrives earlier on a shortcut,
+//! and the targets are elsewhere then), each leg is validated at the time it
+//! is sailed, from the encounters in force where it starts.
+//!
+//! From the present pose, the farthest point of the branch reachable by one
+//! valid leg is sought: the goal first, then by a galloping search (1, 2, 4,
+//! ... points on, then bisection), which assumes nearer points are easier to
+//! reach; when the next point itself cannot be reached, a few more are tried.
+//! After the first leg, before the branch's points, the simplifier tries the
+//! manoeuvre mariners use: hold the course just taken for a while
+//! ([`HOLD_M`], shortest first), then one leg to the goal.
+
+use crate::validity::{EncounterState, MotionValidator};
+use glam::DVec2;
+use vorrt_jfs::{Leg, MotionModel, Pose};
+
+/// When the next branch point cannot be reached by a valid leg, how many
+/// points beyond it are tried before the simplification gives up.
+pub const LOOK_PAST: usize = 12;
+
+/// One leg of a simplified path, with the encounters in force at its end and
+/// the time it ends.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimplifiedLeg {
+    /// The leg.
+    pub leg: Leg,
+    /// Seconds from the start to the leg's end.
+    pub end_elapsed_s: f64,
+    /// The encounters in force at its end.
+    pub state: EncounterState,
+}
+
+/// Simplifies the path through `points` (the branch after its root; the last
+/// is the goal) from `start` with `state` in force into legs of `model` at
+/// `speed_mps`, every one accepted by `validator`. `None` when some point
+/// cannot be passed on by any valid leg.
+///
+/// ```
+/// use vorrt_planner::simplify::simplify;
+/// use vorrt_planner::validity::EncounterState;
+/// use vorrt_planner::{safety::SafetyChecker, PlannerConfig};
+/// use vorrt_colregs::VesselState;
+/// use vorrt_jfs::{Pose, RateLimitedTurn};
+/// use glam::DVec2;
+/// let config = PlannerConfig::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let checker = SafetyChecker::new(&config, &[], own, DVec2::new(0.0, 3000.0), 0.0);
+/// // A zig-zag with nothing in the way becomes one straight leg.
+/// let points: Vec<DVec2> = (1..=30)
+///     .map(|i| DVec2::new(if i % 2 == 0 { 0.0 } else { 20.0 }, 100.0 * i as f64))
+///     .collect();
+/// let legs = simplify(
+///     &RateLimitedTurn { turn_radius_m: 300.0 },
+///     &checker,
+///     Pose { position_m: DVec2::ZERO, course_rad: 0.0 },
+///     6.0,
+///     &points,
+///     &EncounterState::default(),
+/// )
+/// .unwrap();
+/// assert_eq!(legs.len(), 1);
+/// ```
+pub fn simplify<M: MotionModel, V: MotionValidator>(
+    model: &M,
+    validator: &V,
+    start: Pose,
+    speed_mps: f64,
+    points: &[DVec2],
+    state: &EncounterState,
+) -> Option<Vec<SimplifiedLeg>> {
+    let mut legs = Vec::new();
+    let mut pose = start;
+    let mut elapsed_s = 0.0;
+    let mut state = state.clone();
+    let mut next = 0usize;
+    let last = points.len().checked_sub(1)?;
+    while next <= last {
+        let attempt = |index: usize| -> Option<SimplifiedLeg> {
+            let leg = model.steer(pose, points[index], speed_mps, f64::INFINITY)?;
+            let mut after = state.clone();
+            validator.validate(&leg, elapsed_s, &mut after).ok()?;
+            Some(SimplifiedLeg {
+                end_elapsed_s: elapsed_s + leg.duration_s(),
+                leg,
+                state: after,
+            })
+        };
+        if let Some(leg) = attempt(last) {
+            legs.push(leg);
+            break;
+        }
+        // Hold the present course a while, then head for the goal: an
+        // alteration held until the other vessel is past, then one return.
+        if !legs.is_empty()
+            && let Some((hold, back)) =
+                hold_then_goal(model, validator, &legs, speed_mps, points[last])
+        {
+            legs.push(hold);
+            legs.push(back);
+            break;
+        }
+        let (index, leg) = farthest_reachable(next, last, &attempt)?;
+        pose = leg.leg.end_pose();
+        elapsed_s = leg.end_elapsed_s;
+        state = leg.state.clone();
+        legs.push(leg);
+        next = index + 1;
+    }
+    Some(legs)
+}
+
+/// Runs the present course on for the shortest of [`HOLD_M`] after which a
+/// leg to the goal is valid too: the two legs, or `None`.
+fn hold_then_goal<M: MotionModel, V: MotionValidator>(
+    model: &M,
+    validator: &V,
+    legs: &[SimplifiedLeg],
+    speed_mps: f64,
+    goal_m: DVec2,
+) -> Option<(SimplifiedLeg, SimplifiedLeg)> {
+    let last = legs.last()?;
+    let pose = last.leg.end_pose();
+    for hold_m in HOLD_M {
+        let hold = Leg::straight(pose.position_m, pose.course_rad, hold_m, speed_mps);
+        let mut after_hold = last.state.clone();
+        if validator
+            .validate(&hold, last.end_elapsed_s, &mut after_hold)
+            .is_err()
+        {
+            // Holding on is already invalid this far: longer holds are too.
+            return None;
+        }
+        let hold_end_s = last.end_elapsed_s + hold.duration_s();
+        let Some(back) = model.steer(hold.end_pose(), goal_m, speed_mps, f64::INFINITY) else {
+            continue;
+        };
+        let mut after_back = after_hold.clone();
+        if validator
+            .validate(&back, hold_end_s, &mut after_back)
+            .is_ok()
+        {
+            return Some((
+                SimplifiedLeg {
+                    leg: hold,
+                    end_elapsed_s: hold_end_s,
+                    state: after_hold,
+                },
+                SimplifiedLeg {
+                    end_elapsed_s: hold_end_s + back.duration_s(),
+                    leg: back,
+                    state: after_back,
+                },
+            ));
+        }
+    }
+    None
+}
+
+/// How far the present course is held before heading for the goal, metres,
+/// shortest first (the earliest valid return wins).
+pub const HOLD_M: [f64; 10] = [
+    250.0, 500.0, 1000.0, 1500.0, 2000.0, 3000.0, 4000.0, 6000.0, 8000.0, 12000.0,
+];
+
+/// The farthest index in `first..last` (where `last` is known unreachable)
+/// that `attempt` accepts, by galloping then bisection.
+fn farthest_reachable<F: Fn(usize) -> Option<SimplifiedLeg>>(
+    first: usize,
+    last: usize,
+    attempt: &F,
+) -> Option<(usize, SimplifiedLeg)> {
+    // The first reachable point at or after `first`, within LOOK_PAST.
+    let mut best = (first..last.min(first + LOOK_PAST + 1))
+        .find_map(|index| attempt(index).map(|leg| (index, leg)))?;
+    let mut unreachable = last;
+    let mut stride = 1;
+    // Gallop: double the stride while points stay reachable.
+    loop {
+        let probe = best.0 + stride;
+        if probe >= unreachable {
+            break;
+        }
+        match attempt(probe) {
+            Some(leg) => {
+                best = (probe, leg);
+                stride *= 2;
+            }
+            None => {
+                unreachable = probe;
+                break;
+            }
+        }
+    }
+    // Bisect between the best reachable and the nearest known unreachable.
+    while unreachable - best.0 > 1 {
+        let probe = best.0 + (unreachable - best.0) / 2;
+        match attempt(probe) {
+            Some(leg) => best = (probe, leg),
+            None => unreachable = probe,
+        }
+    }
+    Some(best)
+}

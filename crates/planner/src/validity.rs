@@ -1,0 +1,193 @@
+//! The one validity check of ownship's motion, and the encounter state it
+//! carries along a branch.
+//!
+//! [`MotionValidator::validate`] judges a whole [`Leg`] (a turn then a
+//! straight run, as [`vorrt_jfs::MotionModel`] makes it) and advances the
+//! encounters in force to the leg's end, in one operation. The tree's growth,
+//! the path simplifier ([`crate::simplify`]) and a closed loop's "is my plan
+//! still valid" test all call it, so they can never judge differently.
+//!
+//! [`SafetyChecker`] is the planner's validator (paper, Algorithm 3, see
+//! [`crate::safety`]). A leg is cut into pieces: the chords of its turn are
+//! checked for clearance along the curve actually sailed (`d_th` plus the
+//! chord's largest distance from the arc); the pieces of its straight run, on
+//! the settled course, get every check (velocity obstacle, clearance, clearance
+//! ahead, COLREGs). A turn is judged as a manoeuvre by the course it settles
+//! on, as an observer judges an alteration (rule 8(b)): the headings swept
+//! through on the way are transient.
+
+use crate::plan::RejectionCause;
+use crate::safety::{Move, SafetyChecker};
+use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch};
+use vorrt_geometry::angle;
+use vorrt_jfs::{Leg, LinearTrack};
+
+/// The encounters in force at one point of a branch: per target, the latch
+/// (rules 13-17) and the largest alteration of course from its reference made
+/// since it began, radians (rule 16, readily apparent).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct EncounterState {
+    /// Each target's encounter in force, if any.
+    pub latches: Vec<Option<EncounterLatch>>,
+    /// Each target's alteration made, radians (0 without an encounter).
+    pub alterations: Vec<f64>,
+}
+
+impl EncounterState {
+    /// Copies `latches` and `alterations` in, reusing the buffers.
+    pub fn set(&mut self, latches: &[Option<EncounterLatch>], alterations: &[f64]) {
+        self.latches.clear();
+        self.latches.extend_from_slice(latches);
+        self.alterations.clear();
+        self.alterations.extend_from_slice(alterations);
+    }
+
+    /// Advances every encounter to ownship's state `own_then`, at `elapsed_s`
+    /// after the tracks' time zero (`time_s` on the clock): latches are
+    /// updated from the new geometry, and the alteration made for a latch
+    /// that holds grows to `own_then`'s course; a new or released latch starts
+    /// from no alteration.
+    pub fn advance(
+        &mut self,
+        own_then: &VesselState,
+        tracks: &[LinearTrack],
+        elapsed_s: f64,
+        time_s: f64,
+        rules: &RuleParameters,
+    ) {
+        for ((latch, altered), track) in self
+            .latches
+            .iter_mut()
+            .zip(self.alterations.iter_mut())
+            .zip(tracks)
+        {
+            let before = *latch;
+            *latch = update_latch(before, own_then, &track.state_at(elapsed_s), time_s, rules);
+            *altered = match (*latch, before) {
+                (Some(now), Some(was)) if now == was => altered
+                    .max(angle::signed_turn(now.reference_course_rad, own_then.course_rad).abs()),
+                _ => 0.0,
+            };
+        }
+    }
+}
+
+/// Judges ownship's motion: the seam shared by tree growth, path
+/// simplification and a closed loop's plan check.
+///
+/// ```
+/// use vorrt_planner::validity::{EncounterState, MotionValidator};
+/// use vorrt_planner::safety::SafetyChecker;
+/// use vorrt_planner::PlannerConfig;
+/// use vorrt_colregs::VesselState;
+/// use vorrt_jfs::{Leg, TargetState};
+/// use glam::DVec2;
+///
+/// let config = PlannerConfig::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// // A target lying still 150 m east of the line north.
+/// let tracks = [TargetState::constant_velocity(
+///     VesselState::new(DVec2::new(150.0, 1000.0), 0.0, 0.0, 50.0)).track()];
+/// let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 5000.0), 0.0);
+/// let mut state = EncounterState { latches: vec![None], alterations: vec![0.0] };
+/// let north = Leg::straight(DVec2::ZERO, 0.0, 2000.0, 6.0);
+/// assert!(checker.validate(&north, 0.0, &mut state).is_err()); // within d_th
+/// let west = Leg::straight(DVec2::ZERO, 270f64.to_radians(), 2000.0, 6.0);
+/// let mut state = EncounterState { latches: vec![None], alterations: vec![0.0] };
+/// assert!(checker.validate(&west, 0.0, &mut state).is_ok());
+/// ```
+pub trait MotionValidator {
+    /// Checks `leg`, which starts `start_elapsed_s` seconds after the plan's
+    /// start with the encounters `state` in force, and advances `state` to
+    /// the leg's end. On an error `state` is left part way and must not be
+    /// used.
+    ///
+    /// # Errors
+    /// The first [`RejectionCause`] the leg runs into.
+    fn validate(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+    ) -> Result<(), RejectionCause>;
+}
+
+impl MotionValidator for SafetyChecker<'_> {
+    fn validate(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let chord_error_m = leg.chord_error_m();
+        for piece in leg.pieces(self.config.step_m) {
+            let candidate = Move {
+                start_m: piece.start_m,
+                start_elapsed_s: start_elapsed_s + piece.elapsed_s,
+                course_rad: piece.course_rad,
+                velocity_mps: piece.velocity_mps,
+                duration_s: piece.duration_s,
+            };
+            if piece.turning {
+                self.check_clearance(&candidate, chord_error_m)?;
+            } else {
+                self.check(&candidate, &state.latches, &state.alterations)?;
+            }
+            let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
+            let own_then = VesselState {
+                position_m: piece.end_m(),
+                course_rad: piece.course_rad,
+                ..self.ownship
+            };
+            state.advance(
+                &own_then,
+                self.tracks,
+                end_elapsed_s,
+                self.start_time_s + end_elapsed_s,
+                &self.config.rules,
+            );
+        }
+        Ok(())
+    }
+}
+
+/// Checks `legs`, sailed one after the other from `problem`'s start with its
+/// encounters (and alterations made) in force, with the planner's own
+/// validator: how a closed loop asks whether the rest of its plan is still
+/// valid as the targets are now predicted.
+///
+/// # Errors
+/// The first [`RejectionCause`] a leg runs into.
+pub fn check_legs(
+    config: &crate::PlannerConfig,
+    problem: &crate::PlanningProblem,
+    legs: &[Leg],
+) -> Result<(), RejectionCause> {
+    let tracks: Vec<LinearTrack> = problem
+        .targets
+        .iter()
+        .map(|target| target.track())
+        .collect();
+    let checker = SafetyChecker::new(
+        config,
+        &tracks,
+        problem.ownship,
+        problem.goal_m,
+        problem.start_time_s,
+    );
+    let targets = tracks.len();
+    let mut state = EncounterState {
+        latches: (0..targets)
+            .map(|index| problem.encounters.get(index).copied().flatten())
+            .collect(),
+        alterations: (0..targets)
+            .map(|index| problem.alterations.get(index).copied().unwrap_or(0.0))
+            .collect(),
+    };
+    let mut elapsed_s = 0.0;
+    for leg in legs {
+        checker.validate(leg, elapsed_s, &mut state)?;
+        elapsed_s += leg.duration_s();
+    }
+    Ok(())
+}
