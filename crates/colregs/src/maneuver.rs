@@ -46,11 +46,17 @@ pub enum ManeuverViolation {
     PortTurnForPortVessel,
     /// A give-way alteration too small to be readily apparent (rules 8(b), 16).
     InsufficientAlteration,
+    /// A give-way vessel still holding its course at risk of collision
+    /// nearer than the give-way action range (rules 8(a), 16: early action).
+    LateAction,
+    /// A give-way vessel easing back from its readily apparent alteration
+    /// before the other vessel is past (rule 8(d): until finally past and clear).
+    AlterationNotHeld,
 }
 
 impl ManeuverViolation {
     /// Every violation, in a fixed order.
-    pub const ALL: [ManeuverViolation; 7] = [
+    pub const ALL: [ManeuverViolation; 9] = [
         ManeuverViolation::PortTurn,
         ManeuverViolation::StarboardPassing,
         ManeuverViolation::CrossingAhead,
@@ -58,6 +64,8 @@ impl ManeuverViolation {
         ManeuverViolation::StandOnSpeedChange,
         ManeuverViolation::PortTurnForPortVessel,
         ManeuverViolation::InsufficientAlteration,
+        ManeuverViolation::LateAction,
+        ManeuverViolation::AlterationNotHeld,
     ];
 
     /// The rule broken, as text.
@@ -82,6 +90,12 @@ impl ManeuverViolation {
             }
             ManeuverViolation::InsufficientAlteration => {
                 "give-way alteration too small to be readily apparent (rules 8(b), 16)"
+            }
+            ManeuverViolation::LateAction => {
+                "give-way vessel holding course at risk of collision within the action range (rules 8(a), 16)"
+            }
+            ManeuverViolation::AlterationNotHeld => {
+                "give-way alteration eased back before the other vessel is past (rule 8(d))"
             }
         }
     }
@@ -340,6 +354,76 @@ pub fn check_alteration(
     let turn = angle::signed_turn(latch.reference_course_rad, course_rad).abs();
     if turn > parameters.turn_tolerance_rad && turn < parameters.apparent_turn_rad {
         return Err(ManeuverViolation::InsufficientAlteration);
+    }
+    Ok(())
+}
+
+/// Rules 8(a), 8(d) and 16 for a give-way vessel (head-on or crossing): the
+/// action is early, and held until the other vessel is past.
+///
+/// - **Early** (`LateAction`): until a readily apparent alteration has been
+///   made (`altered_rad` under [`apparent_turn_rad`](RuleParameters::apparent_turn_rad)),
+///   a candidate that still holds the reference course (within
+///   [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)) while its
+///   closest approach is under [`risk_cpa_m`](RuleParameters::risk_cpa_m)
+///   must be farther than [`give_way_action_range_m`](RuleParameters::give_way_action_range_m).
+/// - **Held** (`AlterationNotHeld`): once it has been made, while the range
+///   is still closing, the candidate's course stays at least the apparent
+///   alteration to starboard of the reference.
+///
+/// ```
+/// use vorrt_colregs::{check_action, CandidateMotion, EncounterLatch, Encounter, ManeuverViolation, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let latch = EncounterLatch::new(Encounter::HeadOn, &own, 0.0);
+/// let (target, target_velocity) = (DVec2::new(0.0, 3000.0), DVec2::new(0.0, -6.0));
+/// let hold = CandidateMotion::new(DVec2::ZERO, 0.0, 6.0);
+/// // Holding course 3000 m (1.6 nm) from a head-on vessel: late.
+/// assert_eq!(check_action(&latch, &hold, target, target_velocity, &params, 0.0),
+///            Err(ManeuverViolation::LateAction));
+/// // After a 35° alteration, easing back to 10° before passing: not held.
+/// let eased = CandidateMotion::new(DVec2::ZERO, 10f64.to_radians(), 6.0);
+/// assert_eq!(check_action(&latch, &eased, target, target_velocity, &params, 35f64.to_radians()),
+///            Err(ManeuverViolation::AlterationNotHeld));
+/// ```
+///
+/// # Errors
+/// [`ManeuverViolation::LateAction`] or [`ManeuverViolation::AlterationNotHeld`].
+pub fn check_action(
+    latch: &EncounterLatch,
+    own: &CandidateMotion,
+    target_position_m: DVec2,
+    target_velocity_mps: DVec2,
+    parameters: &RuleParameters,
+    altered_rad: f64,
+) -> Result<(), ManeuverViolation> {
+    if !matches!(
+        latch.encounter,
+        Encounter::HeadOn | Encounter::CrossingGiveWay
+    ) {
+        return Ok(());
+    }
+    let offset = target_position_m - own.position_m;
+    let relative_velocity = own.velocity_mps - target_velocity_mps;
+    let closing = offset.dot(relative_velocity) > 0.0;
+    let turn = angle::signed_turn(latch.reference_course_rad, own.course_rad);
+    if altered_rad < parameters.apparent_turn_rad {
+        let holding = turn.abs() <= parameters.turn_tolerance_rad;
+        if holding && closing && offset.length() < parameters.give_way_action_range_m {
+            let cpa = vorrt_geometry::cpa::cpa_clamped(
+                own.position_m - target_position_m,
+                relative_velocity,
+                f64::INFINITY,
+            );
+            if cpa.distance_m < parameters.risk_cpa_m {
+                return Err(ManeuverViolation::LateAction);
+            }
+        }
+        return Ok(());
+    }
+    if closing && turn < parameters.apparent_turn_rad - parameters.turn_tolerance_rad {
+        return Err(ManeuverViolation::AlterationNotHeld);
     }
     Ok(())
 }

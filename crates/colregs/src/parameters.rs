@@ -42,6 +42,13 @@ pub struct RuleParameters {
     /// smallest give-way alteration [`check_alteration`](crate::check_alteration)
     /// allows, and the one compliance scoring asks for. Default 30°.
     pub apparent_turn_rad: f64,
+    /// Range by which a give-way vessel has begun its readily apparent
+    /// action (rules 8(a), 16: early and substantial): holding course at
+    /// risk of collision nearer than this is late action. Default 2.5 nm
+    /// (4630 m): evaluators ask for action begun at 2 nm or more where risk
+    /// arose beyond it (Woerner 2019), and a turn at a bounded rate of turn
+    /// shows over ground a little after it begins.
+    pub give_way_action_range_m: f64,
 }
 
 impl Default for RuleParameters {
@@ -57,6 +64,7 @@ impl Default for RuleParameters {
             stand_on_speed_tolerance_mps: 1.0,
             stand_on_action_range_m: 2.0 * 1852.0,
             apparent_turn_rad: 30f64.to_radians(),
+            give_way_action_range_m: 2.5 * 1852.0,
         }
     }
 }
@@ -72,6 +80,7 @@ impl RuleParameters {
             ("mtd_m", self.mtd_m),
             ("risk_cpa_m", self.risk_cpa_m),
             ("stand_on_action_range_m", self.stand_on_action_range_m),
+            ("give_way_action_range_m", self.give_way_action_range_m),
         ];
         for (field, value) in positive {
             if !(value.is_finite() && value > 0.0) {

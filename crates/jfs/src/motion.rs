@@ -383,7 +383,8 @@ pub trait MotionModel {
     /// The leg from `from` toward `toward_m` at `speed_mps`, at most
     /// `max_length_m` long (it ends on the point when the point is reached
     /// within that length). `None` when the point is where ownship is, or it
-    /// cannot be reached this way (inside the turning circle).
+    /// cannot be reached this way (inside the turning circle, or only by
+    /// turning through more than half a circle).
     fn steer(&self, from: Pose, toward_m: DVec2, speed_mps: f64, max_length_m: f64) -> Option<Leg>;
 
     /// The leg from `from` that turns onto `course_rad` and then runs
@@ -499,6 +500,11 @@ impl MotionModel for RateLimitedTurn {
         let tangent_course =
             angle::unit_to_course(to_point) + side * (radius / centre_distance).asin();
         let swept = angle::normalize_2pi(side * (tangent_course - from.course_rad));
+        if swept > std::f64::consts::PI {
+            // A point behind, close on the turning side: reached only by
+            // looping round, which no one steers (nor reads as an alteration).
+            return None;
+        }
         let tangent_m = (centre_distance * centre_distance - radius * radius).sqrt();
         let arc_m = radius * swept;
         let (swept, straight_m) = if arc_m >= max_length_m {

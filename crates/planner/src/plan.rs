@@ -73,6 +73,12 @@ pub struct RejectionCounts {
     pub port_turn_for_port_vessel: u64,
     /// Rejected for a give-way alteration too small to be apparent (rules 8(b), 16).
     pub insufficient_alteration: u64,
+    /// Rejected for holding course at risk within the give-way action range (rules 8(a), 16).
+    #[serde(default)]
+    pub late_action: u64,
+    /// Rejected for easing back from the alteration before the target is past (rule 8(d)).
+    #[serde(default)]
+    pub alteration_not_held: u64,
 }
 
 impl RejectionCounts {
@@ -103,12 +109,16 @@ impl RejectionCounts {
             RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration) => {
                 &mut self.insufficient_alteration
             }
+            RejectionCause::Colregs(ManeuverViolation::LateAction) => &mut self.late_action,
+            RejectionCause::Colregs(ManeuverViolation::AlterationNotHeld) => {
+                &mut self.alteration_not_held
+            }
         }
     }
 
     /// Every cause with its count, in a fixed order.
     #[must_use]
-    pub fn by_cause(&self) -> [(RejectionCause, u64); 10] {
+    pub fn by_cause(&self) -> [(RejectionCause, u64); 12] {
         [
             (RejectionCause::VelocityObstacle, self.velocity_obstacle),
             (RejectionCause::Clearance, self.clearance),
@@ -140,6 +150,14 @@ impl RejectionCounts {
             (
                 RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration),
                 self.insufficient_alteration,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::LateAction),
+                self.late_action,
+            ),
+            (
+                RejectionCause::Colregs(ManeuverViolation::AlterationNotHeld),
+                self.alteration_not_held,
             ),
         ]
     }

@@ -27,7 +27,8 @@ use crate::config::PlannerConfig;
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::{
-    CandidateMotion, EncounterLatch, Role, VesselState, check_alteration, check_motion,
+    CandidateMotion, EncounterLatch, Role, VesselState, check_action, check_alteration,
+    check_motion,
 };
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
@@ -228,6 +229,15 @@ impl<'a> SafetyChecker<'a> {
                 .map_err(RejectionCause::Colregs)?;
                 check_alteration(&latch, altered, candidate.course_rad, rules)
                     .map_err(RejectionCause::Colregs)?;
+                check_action(
+                    &latch,
+                    &motion,
+                    target_position,
+                    target_velocity,
+                    rules,
+                    altered,
+                )
+                .map_err(RejectionCause::Colregs)?;
             }
         }
         Ok(())
