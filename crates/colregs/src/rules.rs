@@ -31,7 +31,8 @@
 //! are in contact when their centres are closer than the sum of the radii,
 //! `distance < (length_a + length_b) / 2` ([`in_contact`]). This is the only
 //! definition of collision in the workspace. The velocity obstacle's disc of
-//! radius `length_a + length_b` (notes erratum 7) is a safety margin the
+//! radius `length_a + length_b` (`docs/architecture.md`, decision 3) is a
+//! safety margin the
 //! planner keeps, not a collision test; the clearance `d_th` is the distance
 //! the planner and the scoring require, also not a collision test.
 
