@@ -32,9 +32,9 @@
 //! `distance < (length_a + length_b) / 2` ([`in_contact`]). This is the only
 //! definition of collision in the workspace. The velocity obstacle's disc of
 //! radius `length_a + length_b` (`docs/architecture.md`, decision 3) is a
-//! safety margin the
-//! planner keeps, not a collision test; the clearance `d_th` is the distance
-//! the planner and the scoring require, also not a collision test.
+//! safety margin the planner keeps, not a collision test; the clearance
+//! `d_th` is the distance the planner and the scoring require, also not a
+//! collision test.
 
 use crate::encounter::{Encounter, Role};
 use crate::latch::EncounterLatch;
