@@ -5,6 +5,7 @@
 use crate::encounter::{Encounter, classify};
 use crate::parameters::RuleParameters;
 use crate::risk::assess_risk;
+use crate::rules::within_mtd;
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -100,7 +101,7 @@ pub fn update_latch(
         Some(latch) => Some(latch),
         None => {
             // Beyond MTD there is no risk (and no need to work out the CPA).
-            if own.range_to(target) >= parameters.mtd_m
+            if !within_mtd(own.range_to(target), parameters)
                 || !assess_risk(own, target, parameters).at_risk
             {
                 return None;

@@ -14,6 +14,7 @@
 //! | [`encounter`] | [`classify`]: head-on, crossing give-way / stand-on, overtaking, being overtaken, none (rules 13-15); [`Role`] |
 //! | [`latch`] | [`EncounterLatch`], [`update_latch`], [`has_passed`]: keep an encounter's type until the vessels have passed |
 //! | [`passing`] | [`passing_side`], [`crosses_ahead`]: how ownship passes a target |
+//! | [`rules`] | the rule book: the shared predicates ([`rules::may_act`], [`rules::giving_way_to_any`], [`rules::is_port_turn`], [`rules::is_readily_apparent`], [`rules::in_contact`], ...) every check and score calls; the one definition of collision (hull contact) |
 //! | [`compliance`] | [`assess_encounter`]: post-hoc scoring of one recorded encounter (safety, rules 13-17), [`ScoringParameters`] |
 //! | [`maneuver`] | [`check_maneuver`]: whether a candidate velocity obeys rules 14-17 in an encounter in force; [`check_alteration`]: rule 16's readily apparent alteration |
 //! | [`error`] | [`ColregsError`] |
@@ -44,6 +45,7 @@ pub mod maneuver;
 pub mod parameters;
 pub mod passing;
 pub mod risk;
+pub mod rules;
 pub mod vessel;
 
 pub use compliance::{

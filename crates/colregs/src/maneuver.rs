@@ -22,10 +22,10 @@ use crate::encounter::Encounter;
 use crate::latch::EncounterLatch;
 use crate::parameters::RuleParameters;
 use crate::passing::{PassingSide, crosses_ahead, passing_side};
+use crate::rules;
 use crate::vessel::VesselState;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
-use std::f64::consts::PI;
 use vorrt_geometry::angle;
 
 /// The rule a candidate manoeuvre would break.
@@ -115,7 +115,7 @@ pub fn stand_on_may_act(
     target: &VesselState,
     parameters: &RuleParameters,
 ) -> bool {
-    own_position_m.distance(target.position_m) <= parameters.stand_on_action_range_m
+    rules::within_action_range(own_position_m.distance(target.position_m), parameters)
 }
 
 /// Whether COLREGs allow ownship, at `own_position_m`, to take course
@@ -245,9 +245,9 @@ pub fn check_motion(
     let speed_mps = own.speed_mps;
     let own_velocity = own.velocity_mps;
     let target_velocity = target_velocity_mps;
-    let turn = angle::signed_turn(latch.reference_course_rad, course_rad);
-    let turned_to_port = turn < -parameters.turn_tolerance_rad;
-    let eased_back = altered_rad >= parameters.apparent_turn_rad && -turn < altered_rad;
+    let turn = rules::course_change_rad(latch.reference_course_rad, course_rad);
+    let turned_to_port = rules::is_port_turn(turn, parameters);
+    let eased_back = rules::is_readily_apparent(altered_rad, parameters) && -turn < altered_rad;
     match latch.encounter {
         Encounter::HeadOn => {
             if turned_to_port && !eased_back {
@@ -282,27 +282,25 @@ pub fn check_motion(
             Ok(())
         }
         Encounter::CrossingStandOn | Encounter::BeingOvertaken => {
-            if stand_on_acting {
+            if !rules::must_stand_on(latch.encounter, stand_on_acting) {
                 // The port side as seen on the course held (the reference),
-                // not on the candidate: a port turn can bring a port-side
-                // vessel onto the bow, which is what rule 17(c) forbids.
-                let target_on_port = angle::relative_bearing(
-                    own_position_m,
-                    latch.reference_course_rad,
-                    target_position_m,
-                ) >= PI;
-                if latch.encounter == Encounter::CrossingStandOn && turned_to_port && target_on_port
+                // not on the candidate (rules::is_on_port_side).
+                if latch.encounter == Encounter::CrossingStandOn
+                    && turned_to_port
+                    && rules::is_on_port_side(
+                        own_position_m,
+                        latch.reference_course_rad,
+                        target_position_m,
+                    )
                 {
                     return Err(ManeuverViolation::PortTurnForPortVessel);
                 }
                 return Ok(());
             }
-            if turn.abs() > parameters.stand_on_course_tolerance_rad {
+            if rules::is_stand_on_course_change(turn, parameters) {
                 return Err(ManeuverViolation::StandOnCourseChange);
             }
-            if (speed_mps - latch.reference_speed_mps).abs()
-                > parameters.stand_on_speed_tolerance_mps
-            {
+            if rules::is_speed_change(speed_mps - latch.reference_speed_mps, parameters) {
                 return Err(ManeuverViolation::StandOnSpeedChange);
             }
             Ok(())
@@ -346,13 +344,12 @@ pub fn check_alteration(
     course_rad: f64,
     parameters: &RuleParameters,
 ) -> Result<(), ManeuverViolation> {
-    if latch.encounter.role() != crate::encounter::Role::GiveWay
-        || altered_rad >= parameters.apparent_turn_rad
-    {
+    if !rules::gives_way(latch.encounter) || rules::is_readily_apparent(altered_rad, parameters) {
         return Ok(());
     }
-    let turn = angle::signed_turn(latch.reference_course_rad, course_rad).abs();
-    if turn > parameters.turn_tolerance_rad && turn < parameters.apparent_turn_rad {
+    let turn = rules::course_change_rad(latch.reference_course_rad, course_rad);
+    if rules::is_detectable_turn(turn, parameters) && !rules::is_readily_apparent(turn, parameters)
+    {
         return Err(ManeuverViolation::InsufficientAlteration);
     }
     Ok(())

@@ -8,6 +8,7 @@ use vorrt_colregs::compliance::{
     ComplianceViolation, EncounterAssessment, EncounterSample, ScoringParameters, assess_encounter,
     first_latch, safety_score,
 };
+use vorrt_colregs::rules::in_contact;
 use vorrt_colregs::{Encounter, EncounterLatch, PassingSide, Role, RuleParameters, VesselState};
 
 /// One leg of a plan: from `from_s` on, steer `course_deg` at `speed_mps`.
@@ -341,6 +342,50 @@ fn a_closer_pass_never_scores_higher_safety() {
     assert_eq!(results[results.len() - 1].1, 1.0);
 }
 
+/// Head-on, neither vessel acting, both `length_m` long, the target offset
+/// `offset_m` to port: the pass is exactly `offset_m` abeam.
+fn head_on_pass(length_m: f64, offset_m: f64) -> EncounterAssessment {
+    let mut samples = simulate(
+        DVec2::ZERO,
+        &[leg(0.0, 0.0, 6.0)],
+        DVec2::new(-offset_m, 9000.0),
+        &[leg(0.0, 180.0, 6.0)],
+        1500.0,
+        10.0,
+    );
+    for sample in &mut samples {
+        sample.own.length_m = length_m;
+        sample.target.length_m = length_m;
+    }
+    assess(&samples)
+}
+
+#[test]
+fn collision_is_hull_contact_from_the_lengths() {
+    // The case: two 150 m ships passing 60 m apart touch (contact
+    // range 150 m), far outside the scoring's zero-safety range of 25 m.
+    let scoring = ScoringParameters::default();
+    let a = head_on_pass(150.0, 60.0);
+    assert!(
+        (a.min_distance_m - 60.0).abs() < 1e-6,
+        "{}",
+        a.min_distance_m
+    );
+    assert!(a.min_distance_m > scoring.collision_m);
+    assert!(has(&a, "collision"), "{:?}", a.violations);
+    assert_eq!(a.scores.safety, 0.0);
+    assert_eq!(a.scores.overall, 0.0);
+    // Two 10 m boats 20 m apart do not touch (contact range 10 m), though
+    // the pass is under the zero-safety range: no collision, safety 0.
+    let a = head_on_pass(10.0, 20.0);
+    assert!(a.min_distance_m < scoring.collision_m);
+    assert!(!has(&a, "collision"), "{:?}", a.violations);
+    assert!(has(&a, "clearance_violated"), "{:?}", a.violations);
+    assert_eq!(a.scores.safety, 0.0);
+    // Just outside contact for 150 m ships: no collision.
+    assert!(!has(&head_on_pass(150.0, 151.0), "collision"));
+}
+
 #[test]
 fn violations_serialise_with_their_kind() {
     let violation = ComplianceViolation::LateAction { range_m: 900.0 };
@@ -368,7 +413,8 @@ proptest! {
 
     /// Every score of any recorded encounter lies in [0, 1]; overall is never
     /// above safety or any applicable rule score; a minimum range under the
-    /// collision range gives safety 0 and overall 0.
+    /// zero-safety range gives safety 0 and overall 0; a collision is found
+    /// exactly when the hulls touched, and scores 0.
     #[test]
     fn scores_always_lie_in_the_unit_interval(
         target_x in -6000.0..6000.0f64,
@@ -408,6 +454,13 @@ proptest! {
             prop_assert_eq!(s.safety, 0.0);
             prop_assert_eq!(s.overall, 0.0);
             prop_assert!(!a.safe);
+        }
+        // A collision is hull contact (50 m and 80 m hulls: 65 m), nothing else.
+        let collided = in_contact(a.min_distance_m, 50.0, 80.0);
+        prop_assert_eq!(a.violations.iter().any(|v| v.name() == "collision"), collided);
+        if collided {
+            prop_assert_eq!(s.safety, 0.0);
+            prop_assert_eq!(s.overall, 0.0);
         }
     }
 

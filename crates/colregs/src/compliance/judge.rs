@@ -1,0 +1,235 @@
+//! The judgements of an assessment, one step per rule group, each adding its
+//! findings and setting the scores of the rules it judges (see the violation
+//! list in the [module documentation](super)).
+
+use super::measure::{Measurements, largest_signed, speed_change_of, turn_of};
+use super::{ComplianceViolation, EncounterSample, ScoringParameters};
+use crate::encounter::Encounter;
+use crate::latch::EncounterLatch;
+use crate::parameters::RuleParameters;
+use crate::passing::PassingSide;
+use crate::rules::{is_on_port_side, is_port_turn, is_speed_change, is_stand_on_course_change};
+
+/// The findings and rule scores built up by the judgement steps.
+#[derive(Debug, Default)]
+pub(super) struct Findings {
+    /// Every finding, safety findings first.
+    pub(super) violations: Vec<ComplianceViolation>,
+    /// Rule 13's score, when judged.
+    pub(super) rule_13: Option<f64>,
+    /// Rule 14's score, when judged.
+    pub(super) rule_14: Option<f64>,
+    /// Rule 15's score, when judged.
+    pub(super) rule_15: Option<f64>,
+    /// Rule 16's score, when judged.
+    pub(super) rule_16: Option<f64>,
+    /// Rule 17's score, when judged.
+    pub(super) rule_17: Option<f64>,
+}
+
+/// `1 - Σ penalties`, clamped to `[0, 1]`.
+fn rule_score(penalties: &[f64]) -> f64 {
+    (1.0 - penalties.iter().sum::<f64>()).clamp(0.0, 1.0)
+}
+
+impl Findings {
+    /// The safety findings, whatever the role: the clearance broken, and a
+    /// collision (hull contact, [`in_contact`](crate::rules::in_contact)).
+    pub(super) fn safety(measured: &Measurements, scoring: &ScoringParameters) -> Self {
+        let min_distance_m = measured.min_distance_m;
+        let mut violations = Vec::new();
+        if min_distance_m < scoring.clearance_m {
+            violations.push(ComplianceViolation::ClearanceViolated { min_distance_m });
+        }
+        if measured.in_contact {
+            violations.push(ComplianceViolation::Collision { min_distance_m });
+        }
+        Self {
+            violations,
+            ..Self::default()
+        }
+    }
+
+    /// Rule 16 (with 8(b)): a give-way vessel's action was needed and taken,
+    /// early and readily apparent.
+    pub(super) fn judge_give_way_action(
+        &mut self,
+        measured: &Measurements,
+        latch: &EncounterLatch,
+        rules: &RuleParameters,
+        scoring: &ScoringParameters,
+    ) {
+        let weights = &scoring.penalties;
+        let mut penalties = Vec::new();
+        match (measured.action_time_s, measured.action_range_m) {
+            (Some(action_time_s), Some(range_m)) => {
+                let prompt = action_time_s - latch.latched_at_s <= scoring.reaction_time_s;
+                if range_m < scoring.late_action_range_m && !prompt {
+                    self.violations
+                        .push(ComplianceViolation::LateAction { range_m });
+                    let lateness = 1.0 - range_m / scoring.late_action_range_m;
+                    penalties.push(weights.late_action * lateness.clamp(0.0, 1.0));
+                }
+                let by_turn = measured.max_course_change_rad.abs() / rules.apparent_turn_rad;
+                let apparent_reduction_mps =
+                    scoring.apparent_speed_reduction_fraction * latch.reference_speed_mps;
+                let by_speed = if apparent_reduction_mps > 0.0 {
+                    measured.max_speed_reduction_mps / apparent_reduction_mps
+                } else {
+                    0.0
+                };
+                let apparentness = by_turn.max(by_speed);
+                if apparentness < 1.0 {
+                    self.violations
+                        .push(ComplianceViolation::ActionNotApparent {
+                            course_change_rad: measured.max_course_change_rad,
+                            speed_change_mps: measured.max_speed_change_mps,
+                        });
+                    penalties.push(weights.not_apparent * (1.0 - apparentness).clamp(0.0, 1.0));
+                }
+            }
+            _ => {
+                let needed = measured.min_distance_m < scoring.clearance_m
+                    || measured
+                        .latch_cpa_m
+                        .is_some_and(|cpa| cpa < scoring.clearance_m);
+                if needed {
+                    self.violations.push(ComplianceViolation::NoAction);
+                    penalties.push(weights.no_action);
+                }
+            }
+        }
+        self.rule_16 = Some(rule_score(&penalties));
+    }
+
+    /// Rules 13-15: the manner of giving way (no port turn in head-on and
+    /// crossing, port to port in head-on, not across the bow of the stand-on
+    /// or overtaken vessel), judged whether or not action was needed.
+    pub(super) fn judge_manner_of_giving_way(
+        &mut self,
+        measured: &Measurements,
+        encounter: Encounter,
+        rules: &RuleParameters,
+        scoring: &ScoringParameters,
+    ) {
+        let weights = &scoring.penalties;
+        let port_turn = match measured.first_turn_rad {
+            Some(first) if is_port_turn(first, rules) => Some(first),
+            _ if is_port_turn(measured.max_course_change_rad, rules) => {
+                Some(measured.max_course_change_rad)
+            }
+            _ => None,
+        };
+        let mut penalties = Vec::new();
+        let port_turn = port_turn
+            .filter(|_| matches!(encounter, Encounter::HeadOn | Encounter::CrossingGiveWay));
+        if let Some(course_change_rad) = port_turn {
+            self.violations
+                .push(ComplianceViolation::PortTurn { course_change_rad });
+            penalties.push(weights.port_turn);
+        }
+        match encounter {
+            Encounter::HeadOn => {
+                if measured.passing_side == Some(PassingSide::Starboard) {
+                    self.violations
+                        .push(ComplianceViolation::StarboardToStarboard);
+                    penalties.push(weights.starboard_to_starboard);
+                }
+                self.rule_14 = Some(rule_score(&penalties));
+            }
+            Encounter::CrossingGiveWay => {
+                if let Some(distance_ahead_m) = measured.crossed_ahead_distance_m {
+                    self.violations
+                        .push(ComplianceViolation::CrossedAhead { distance_ahead_m });
+                    penalties.push(weights.crossed_ahead);
+                }
+                self.rule_15 = Some(rule_score(&penalties));
+            }
+            Encounter::Overtaking => {
+                if let Some(distance_ahead_m) = measured
+                    .crossed_ahead_distance_m
+                    .filter(|d| *d < scoring.clearance_m)
+                {
+                    self.violations
+                        .push(ComplianceViolation::CrossedAhead { distance_ahead_m });
+                    penalties.push(weights.crossed_ahead);
+                }
+                self.rule_13 = Some(rule_score(&penalties));
+            }
+            _ => {}
+        }
+    }
+
+    /// Rule 17: a stand-on vessel keeps course and speed while it may not act
+    /// (17(a)(i); `may_act` says when it may, see
+    /// [`may_act`](crate::rules::may_act)), and in a crossing does not turn
+    /// to port for a vessel on its own port side (17(c)).
+    pub(super) fn judge_stand_on(
+        &mut self,
+        in_force: &[EncounterSample],
+        latch: &EncounterLatch,
+        rules: &RuleParameters,
+        scoring: &ScoringParameters,
+        may_act: impl Fn(&EncounterSample) -> bool,
+    ) {
+        let weights = &scoring.penalties;
+        let mut penalties = Vec::new();
+        let early = || in_force.iter().filter(|s| !may_act(s));
+        let early_turn = largest_signed(early().map(|s| turn_of(latch, s)));
+        let early_speed = largest_signed(early().map(|s| speed_change_of(latch, s)));
+        if is_stand_on_course_change(early_turn, rules) {
+            self.violations
+                .push(ComplianceViolation::StandOnCourseChanged {
+                    course_change_rad: early_turn,
+                });
+            penalties.push(weights.stand_on_course_change);
+        }
+        if is_speed_change(early_speed, rules) {
+            self.violations
+                .push(ComplianceViolation::StandOnSpeedChanged {
+                    speed_change_mps: early_speed,
+                });
+            penalties.push(weights.stand_on_speed_change);
+        }
+        if latch.encounter == Encounter::CrossingStandOn
+            && let Some(s) = first_port_turn_for_port_vessel(in_force, latch, rules, &may_act)
+        {
+            self.violations
+                .push(ComplianceViolation::StandOnTurnedToPort {
+                    course_change_rad: turn_of(latch, s),
+                });
+            penalties.push(weights.stand_on_port_turn);
+        }
+        self.rule_17 = Some(rule_score(&penalties));
+    }
+}
+
+/// Rule 17(c): in a crossing, a vessel that acts does not alter course to
+/// port (of the course held when the encounter began) for a vessel on its
+/// port side. Only a newly taken course counts, and before the stand-on
+/// vessel may act (17(a)(ii)) only one beyond the stand-on tolerance: drift
+/// within it is not action, nor is holding such a course into the action
+/// range. The first such port turn, if the target was then on the port side.
+fn first_port_turn_for_port_vessel<'a>(
+    in_force: &'a [EncounterSample],
+    latch: &EncounterLatch,
+    rules: &RuleParameters,
+    may_act: &impl Fn(&EncounterSample) -> bool,
+) -> Option<&'a EncounterSample> {
+    let port_turn = in_force
+        .iter()
+        .zip(std::iter::once(None).chain(in_force.iter().map(Some)))
+        .find(|(s, previous)| {
+            let altered = previous.is_none_or(|p| p.own.course_rad != s.own.course_rad);
+            let turn = turn_of(latch, s);
+            let acting = may_act(s) || is_stand_on_course_change(turn, rules);
+            altered && acting && is_port_turn(turn, rules)
+        })
+        .map(|(s, _)| s)?;
+    is_on_port_side(
+        port_turn.own.position_m,
+        latch.reference_course_rad,
+        port_turn.target.position_m,
+    )
+    .then_some(port_turn)
+}

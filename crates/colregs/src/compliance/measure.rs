@@ -1,0 +1,268 @@
+//! What ownship did in a recorded encounter, measured before anything is
+//! judged: the closest approach, the window in which the encounter was in
+//! force, and the action taken in it (see the measurement list in the
+//! [module documentation](super)).
+
+use super::EncounterSample;
+use crate::latch::{EncounterLatch, has_passed};
+use crate::parameters::RuleParameters;
+use crate::passing::PassingSide;
+use crate::rules::{course_change_rad, in_contact, is_detectable_turn, is_speed_change};
+use crate::vessel::VesselState;
+use glam::DVec2;
+use std::f64::consts::PI;
+use vorrt_geometry::{angle, closest_point_of_approach, cpa::cpa_clamped, cross};
+
+/// Where in the recording the encounter was in force: `samples[start..end]`,
+/// and the sample at which the vessels had passed (`end`, if they did).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct InForce {
+    /// The first sample at or after the latch time.
+    pub(super) start: usize,
+    /// One past the last in-force sample.
+    pub(super) end: usize,
+    /// The first sample at which the vessels had passed.
+    pub(super) passed_index: Option<usize>,
+}
+
+impl InForce {
+    /// From the first sample at or after the latch time up to (not including)
+    /// the first sample at which the vessels have passed.
+    ///
+    /// Passed is judged on the course ownship was steering when it got there
+    /// (the previous sample's course and speed): a turn made once the vessels
+    /// have passed is not a manoeuvre for this encounter, as a bridge officer
+    /// resumes course only after judging the other vessel passed. The planner
+    /// judges it the same way, at each node on the course that led there.
+    pub(super) fn of(
+        samples: &[EncounterSample],
+        latch: &EncounterLatch,
+        parameters: &RuleParameters,
+    ) -> Self {
+        let start = samples
+            .iter()
+            .position(|s| s.time_s >= latch.latched_at_s - 1e-9)
+            .unwrap_or(samples.len());
+        let passed_index = (start..samples.len()).find(|&index| {
+            let sample = &samples[index];
+            let steering = index
+                .checked_sub(1)
+                .map_or(&sample.own, |previous| &samples[previous].own);
+            let own = VesselState {
+                course_rad: steering.course_rad,
+                speed_mps: steering.speed_mps,
+                ..sample.own
+            };
+            has_passed(&own, &sample.target, latch.encounter, parameters)
+        });
+        let end = passed_index.unwrap_or(samples.len());
+        Self {
+            start,
+            end,
+            passed_index,
+        }
+    }
+
+    /// The in-force samples.
+    pub(super) fn samples<'a>(&self, samples: &'a [EncounterSample]) -> &'a [EncounterSample] {
+        &samples[self.start..self.end]
+    }
+
+    /// The in-force samples and the one that ends the window: every step
+    /// taken while in force.
+    pub(super) fn segments<'a>(&self, samples: &'a [EncounterSample]) -> &'a [EncounterSample] {
+        let segment_end = (self.end + 1).min(samples.len());
+        &samples[self.start.min(segment_end)..segment_end]
+    }
+}
+
+/// The signed course change of a sample from the latch's reference course.
+pub(super) fn turn_of(latch: &EncounterLatch, sample: &EncounterSample) -> f64 {
+    course_change_rad(latch.reference_course_rad, sample.own.course_rad)
+}
+
+/// The signed speed change of a sample from the latch's reference speed.
+pub(super) fn speed_change_of(latch: &EncounterLatch, sample: &EncounterSample) -> f64 {
+    sample.own.speed_mps - latch.reference_speed_mps
+}
+
+/// Every measurement of one recorded encounter.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Measurements {
+    /// Minimum range over the whole run (`+∞` with no samples).
+    pub(super) min_distance_m: f64,
+    /// When it occurred (the latch time with no samples).
+    pub(super) time_of_min_s: f64,
+    /// Whether the hulls touched at the closest approach ([`in_contact`]).
+    pub(super) in_contact: bool,
+    /// Side of ownship on which the target lay at the closest approach.
+    pub(super) passing_side: Option<PassingSide>,
+    /// Range at the first in-force sample.
+    pub(super) latch_range_m: Option<f64>,
+    /// CPA predicted at the first in-force sample, both holding their velocities.
+    pub(super) latch_cpa_m: Option<f64>,
+    /// When the action began.
+    pub(super) action_time_s: Option<f64>,
+    /// Range when the action began.
+    pub(super) action_range_m: Option<f64>,
+    /// The first detectable course change while in force.
+    pub(super) first_turn_rad: Option<f64>,
+    /// The largest course change while in force, signed.
+    pub(super) max_course_change_rad: f64,
+    /// The largest speed change while in force, signed.
+    pub(super) max_speed_change_mps: f64,
+    /// The largest speed reduction while in force, m/s (0 for none).
+    pub(super) max_speed_reduction_mps: f64,
+    /// The smallest distance ahead of the target's bow at which ownship
+    /// crossed its heading line while in force.
+    pub(super) crossed_ahead_distance_m: Option<f64>,
+}
+
+impl Measurements {
+    /// Measures a recording whose in-force window is `window`.
+    pub(super) fn of(
+        samples: &[EncounterSample],
+        window: &InForce,
+        latch: &EncounterLatch,
+        parameters: &RuleParameters,
+    ) -> Self {
+        let (min_distance_m, time_of_min_s, in_contact, passing_side) =
+            match closest_approach(samples) {
+                Some((distance, time, index)) => {
+                    let at = &samples[index];
+                    let contact = in_contact(distance, at.own.length_m, at.target.length_m);
+                    (distance, time, contact, side_at(samples, index, time))
+                }
+                None => (f64::INFINITY, latch.latched_at_s, false, None),
+            };
+        let in_force = window.samples(samples);
+        let latch_sample = in_force.first();
+        let latch_cpa_m = latch_sample.map(|s| {
+            closest_point_of_approach(
+                s.own.position_m,
+                s.own.velocity_mps(),
+                s.target.position_m,
+                s.target.velocity_mps(),
+            )
+            .distance_m
+        });
+        let action = in_force.iter().find(|s| {
+            is_detectable_turn(turn_of(latch, s), parameters)
+                || is_speed_change(speed_change_of(latch, s), parameters)
+        });
+        let first_turn_rad = in_force
+            .iter()
+            .map(|s| turn_of(latch, s))
+            .find(|turn| is_detectable_turn(*turn, parameters));
+        Self {
+            min_distance_m,
+            time_of_min_s,
+            in_contact,
+            passing_side,
+            latch_range_m: latch_sample.map(EncounterSample::range_m),
+            latch_cpa_m,
+            action_time_s: action.map(|s| s.time_s),
+            action_range_m: action.map(EncounterSample::range_m),
+            first_turn_rad,
+            max_course_change_rad: largest_signed(in_force.iter().map(|s| turn_of(latch, s))),
+            max_speed_change_mps: largest_signed(
+                in_force.iter().map(|s| speed_change_of(latch, s)),
+            ),
+            max_speed_reduction_mps: in_force
+                .iter()
+                .map(|s| -speed_change_of(latch, s))
+                .fold(0.0, f64::max),
+            crossed_ahead_distance_m: crossing_ahead_distance(window.segments(samples)),
+        }
+    }
+}
+
+/// The closest approach over the run: (distance, time, index of the sample
+/// that starts the step holding it).
+pub(super) fn closest_approach(samples: &[EncounterSample]) -> Option<(f64, f64, usize)> {
+    let first = samples.first()?;
+    let mut best = (first.range_m(), first.time_s, 0);
+    for (index, pair) in samples.windows(2).enumerate() {
+        let (a, b) = (&pair[0], &pair[1]);
+        let step_s = b.time_s - a.time_s;
+        let relative_a = a.own.position_m - a.target.position_m;
+        let relative_b = b.own.position_m - b.target.position_m;
+        let (distance_m, time_s) = if step_s > 0.0 {
+            let cpa = cpa_clamped(relative_a, (relative_b - relative_a) / step_s, step_s);
+            (cpa.distance_m, a.time_s + cpa.time_s)
+        } else {
+            (relative_b.length(), b.time_s)
+        };
+        if distance_m < best.0 {
+            best = (distance_m, time_s, index);
+        }
+    }
+    Some(best)
+}
+
+/// Side of ownship on which the target lies at the closest approach.
+fn side_at(samples: &[EncounterSample], index: usize, time_s: f64) -> Option<PassingSide> {
+    let a = &samples[index];
+    let relative = |sample: &EncounterSample| sample.target.position_m - sample.own.position_m;
+    let (line_of_sight, course_rad) = match samples.get(index + 1) {
+        Some(b) if b.time_s > a.time_s => {
+            let fraction = ((time_s - a.time_s) / (b.time_s - a.time_s)).clamp(0.0, 1.0);
+            let course = if fraction >= 1.0 {
+                b.own.course_rad
+            } else {
+                a.own.course_rad
+            };
+            (relative(a).lerp(relative(b), fraction), course)
+        }
+        _ => (relative(a), a.own.course_rad),
+    };
+    if line_of_sight.length() <= 1e-9 {
+        return None;
+    }
+    let bearing = angle::relative_bearing(DVec2::ZERO, course_rad, line_of_sight);
+    if bearing > 0.0 && bearing < PI {
+        Some(PassingSide::Starboard)
+    } else if bearing > PI {
+        Some(PassingSide::Port)
+    } else {
+        None
+    }
+}
+
+/// The smallest distance ahead of the target's bow at which ownship's
+/// relative track crosses the target's heading line, over `segments`.
+fn crossing_ahead_distance(segments: &[EncounterSample]) -> Option<f64> {
+    let mut nearest: Option<f64> = None;
+    for pair in segments.windows(2) {
+        let (a, b) = (&pair[0], &pair[1]);
+        let heading = a.target.velocity_mps().normalize_or_zero();
+        if heading == DVec2::ZERO {
+            continue;
+        }
+        let relative_a = a.own.position_m - a.target.position_m;
+        let relative_b = b.own.position_m - b.target.position_m;
+        let offset_a = cross(heading, relative_a);
+        let offset_b = cross(heading, relative_b);
+        let crosses = (offset_a < 0.0 && offset_b >= 0.0) || (offset_a > 0.0 && offset_b <= 0.0);
+        if !crosses {
+            continue;
+        }
+        let fraction = offset_a / (offset_a - offset_b);
+        let ahead_m = heading.dot(relative_a.lerp(relative_b, fraction));
+        if ahead_m > 0.0 {
+            nearest = Some(nearest.map_or(ahead_m, |n: f64| n.min(ahead_m)));
+        }
+    }
+    nearest
+}
+
+/// The signed value of largest magnitude, or 0 for none.
+pub(super) fn largest_signed(values: impl Iterator<Item = f64>) -> f64 {
+    values.fold(0.0, |best, value| {
+        if value.abs() > best.abs() {
+            value
+        } else {
+            best
+        }
+    })
+}

@@ -1,0 +1,276 @@
+//! Post-hoc compliance scoring of one recorded encounter (rules 8, 13-17).
+//!
+//! Given the recorded tracks of ownship and one target
+//! ([`EncounterSample`]s in increasing time, covering the whole run) and the
+//! [`EncounterLatch`] fixed when risk of collision arose, [`assess_encounter`]
+//! measures what ownship did and scores it, in the style of the evaluators of
+//! Woerner et al. (Autonomous Robots, 2019) and Minne (NTNU, 2017) described in
+//! `vorrt-paper-notes.md`, "Compliance scoring in the literature". The
+//! definitions below are this crate's own; every constant is a field of
+//! [`ScoringParameters`] or [`RuleParameters`].
+//!
+//! The assessment runs in named steps, one file each: the recording
+//! (`recording.rs`), the measurements (`measure.rs`: closest approach,
+//! in-force window, action), the judgements (`judge.rs`: safety, rule 16,
+//! rules 13-15, rule 17), the constants and safety score (`scoring.rs`), the
+//! findings (`violation.rs`) and the result (`assessment.rs`). Every rule
+//! judgement they make is a predicate of the rule book, [`crate::rules`].
+//!
+//! ## Measurements
+//! - **Closest approach**: the minimum range over the whole run. Between two
+//!   samples both vessels are taken to move in straight lines, so the minimum
+//!   inside a step is found exactly (CPA of the relative motion over the step),
+//!   not only at sample instants.
+//! - **In force**: from the first sample at or after the latch time up to (not
+//!   including) the first sample at which the vessels have passed
+//!   ([`has_passed`](crate::has_passed)), or to the end of the run.
+//! - **Action**: the first in-force sample at which ownship's course differs
+//!   from the latch's reference course by more than
+//!   [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) or its speed
+//!   from the reference speed by more than
+//!   [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps).
+//! - **Passing side**: the side of ownship (relative bearing from ownship's
+//!   course in `(0, π)` = starboard) on which the target lies at the closest
+//!   approach.
+//! - **Crossed ahead**: while in force, ownship's track relative to the target
+//!   crosses the target's heading line ahead of the target's bow.
+//!
+//! ## Violations, by role
+//! - Always: [`ClearanceViolated`](ComplianceViolation::ClearanceViolated)
+//!   when the minimum range is under `clearance_m` (d_th) and
+//!   [`Collision`](ComplianceViolation::Collision) when the hulls touched at
+//!   the closest approach: the minimum range under half the sum of the two
+//!   lengths ([`in_contact`](crate::rules::in_contact), the workspace's one
+//!   definition of collision). These are safety findings, not rule
+//!   violations: they do not make an assessment non-compliant.
+//! - Give way (head-on, crossing give-way, overtaking; rule 16, with rule 8(b)
+//!   for "readily apparent"):
+//!   - [`NoAction`](ComplianceViolation::NoAction): no action while in force,
+//!     **and** action was needed: the CPA predicted at the latch instant (both
+//!     vessels holding their velocities) or the actual minimum range was under
+//!     `clearance_m`. A risk latched at, say, 1500 m of predicted CPA with a
+//!     200 m clearance needed no manoeuvre, so holding course there is not
+//!     penalised (the latch's risk threshold is a planner trigger, wider than
+//!     the clearance that scoring judges). The manner of passing
+//!     (port turn, starboard-to-starboard, crossing ahead) is judged whether
+//!     or not action was needed: rules 14(a) and 15 prescribe it.
+//!   - [`LateAction`](ComplianceViolation::LateAction): the action began with
+//!     the range already under `late_action_range_m`, unless it began within
+//!     `reaction_time_s` of the latch (risk that arises at close range cannot
+//!     be met earlier).
+//!   - [`ActionNotApparent`](ComplianceViolation::ActionNotApparent): the
+//!     largest course change while in force is under
+//!     [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30°) and the
+//!     largest speed reduction is under `apparent_speed_reduction_fraction` of
+//!     the reference speed (one half).
+//!   - [`PortTurn`](ComplianceViolation::PortTurn) (head-on, rule 14(a);
+//!     crossing give-way, rules 15 and 16): the first detectable course change
+//!     is to port, or the largest one is.
+//!   - [`StarboardToStarboard`](ComplianceViolation::StarboardToStarboard)
+//!     (head-on, rule 14(a)): the target passed on ownship's starboard side.
+//!   - [`CrossedAhead`](ComplianceViolation::CrossedAhead): in crossing
+//!     give-way (rule 15) any crossing of the target's bow; when overtaking
+//!     (rule 13) a crossing of the overtaken vessel's bow closer than
+//!     `clearance_m` ahead of it (cutting in).
+//! - Stand on (crossing stand-on, being overtaken; rule 17):
+//!   - [`StandOnCourseChanged`](ComplianceViolation::StandOnCourseChanged) /
+//!     [`StandOnSpeedChanged`](ComplianceViolation::StandOnSpeedChanged)
+//!     (rule 17(a)(i)): course changed by more than
+//!     [`stand_on_course_tolerance_rad`](RuleParameters::stand_on_course_tolerance_rad)
+//!     or speed by more than
+//!     [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps)
+//!     while the range was still over
+//!     [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m).
+//!   - [`StandOnTurnedToPort`](ComplianceViolation::StandOnTurnedToPort)
+//!     (rule 17(c), crossing only): at its first detectable port turn ownship
+//!     had the target on its port side (relative to the reference course).
+//!
+//! ## Scores (each in `[0, 1]`, 1 = best)
+//! - **Safety** ([`safety_score`]): 1 at or above `clearance_m`, linear down
+//!   to `near_miss_safety` at `near_miss_m`, linear down to 0 at `collision_m`
+//!   and 0 below it; and 0 whenever the hulls touched (a collision), however
+//!   far above `collision_m`. It never increases as the minimum range shrinks.
+//! - **Rule scores**: 1 minus the sum of the penalties of that rule's
+//!   violations (weights in [`PenaltyWeights`]), clamped to `[0, 1]`; `None`
+//!   when the rule places no obligation on ownship in this encounter:
+//!   rule 13 when overtaking; rule 14 in head-on; rule 15 in crossing
+//!   give-way; rule 16 whenever ownship gives way; rule 17 whenever it stands
+//!   on. Late action and a not-apparent action are graded by how far they
+//!   fall short; every other penalty is its full weight.
+//! - **Overall**: the product of safety and every applicable rule score, so a
+//!   collision or a wholly broken rule gives 0 and only a safe, fully
+//!   compliant encounter gives 1.
+
+mod assessment;
+mod judge;
+mod measure;
+mod recording;
+mod scoring;
+#[cfg(test)]
+mod tests;
+mod violation;
+
+pub use assessment::{EncounterAssessment, RuleScores};
+pub use recording::{EncounterSample, first_latch};
+pub use scoring::{PenaltyWeights, ScoringParameters, safety_score};
+pub use violation::ComplianceViolation;
+
+use crate::encounter::Role;
+use crate::latch::EncounterLatch;
+use crate::parameters::RuleParameters;
+use crate::rules;
+use judge::Findings;
+use measure::{InForce, Measurements};
+
+/// Assesses one recorded encounter between ownship and one target.
+///
+/// `samples` must be in increasing time and should cover the whole run
+/// (before and after the latch); `latch` gives the encounter type and the
+/// reference course and speed (see [`first_latch`]). The semantics of every
+/// measurement, violation and score are in the [module documentation](self).
+/// With no samples nothing is measured: the minimum range is `+∞`, nothing is
+/// found and every score is 1.
+///
+/// ```
+/// use vorrt_colregs::compliance::{assess_encounter, first_latch, EncounterSample, ScoringParameters};
+/// use vorrt_colregs::{Encounter, PassingSide, RuleParameters, VesselState};
+/// use glam::DVec2;
+///
+/// // Head-on at 6 m/s each; ownship turns 35° to starboard after one minute.
+/// let rules = RuleParameters::default();
+/// let mut own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let mut target = VesselState::new(DVec2::new(0.0, 9000.0), std::f64::consts::PI, 6.0, 50.0);
+/// let mut samples = Vec::new();
+/// for step in 0..=150 {
+///     let time_s = f64::from(step) * 10.0;
+///     own.course_rad = if time_s >= 60.0 { 35f64.to_radians() } else { 0.0 };
+///     samples.push(EncounterSample::new(time_s, own, target));
+///     own = own.advanced(10.0);
+///     target = target.advanced(10.0);
+/// }
+/// let latch = first_latch(&samples, &rules).expect("risk of collision");
+/// assert_eq!(latch.encounter, Encounter::HeadOn);
+/// let assessment = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+/// assert!(assessment.compliant, "{:?}", assessment.violations);
+/// assert_eq!(assessment.passing_side, Some(PassingSide::Port));
+/// assert_eq!(assessment.scores.overall, 1.0);
+/// ```
+#[must_use]
+pub fn assess_encounter(
+    samples: &[EncounterSample],
+    latch: &EncounterLatch,
+    rules: &RuleParameters,
+    scoring: &ScoringParameters,
+) -> EncounterAssessment {
+    assess_encounter_acting(samples, latch, rules, scoring, &[])
+}
+
+/// As [`assess_encounter`], for a stand-on ownship that also had to give way
+/// to other vessels: `giving_way[i]` says whether it did at `samples[i]`
+/// (missing entries count as `false`). With several targets, rule 17 yields
+/// to the duty to keep out of the way (the planner reads it the same way), so
+/// while it gives way an early course or speed change is not held against
+/// it; rule 17(c) still is.
+#[must_use]
+pub fn assess_encounter_acting(
+    samples: &[EncounterSample],
+    latch: &EncounterLatch,
+    rules: &RuleParameters,
+    scoring: &ScoringParameters,
+    giving_way: &[bool],
+) -> EncounterAssessment {
+    let window = InForce::of(samples, latch, rules);
+    let measured = Measurements::of(samples, &window, latch, rules);
+    let mut findings = Findings::safety(&measured, scoring);
+    match latch.encounter.role() {
+        Role::GiveWay => {
+            findings.judge_give_way_action(&measured, latch, rules, scoring);
+            findings.judge_manner_of_giving_way(&measured, latch.encounter, rules, scoring);
+        }
+        Role::StandOn => {
+            let may_act = stand_on_may_act(samples, giving_way, rules);
+            findings.judge_stand_on(window.samples(samples), latch, rules, scoring, may_act);
+        }
+        Role::None => {}
+    }
+    let passed_at_s = window.passed_index.map(|index| samples[index].time_s);
+    assemble(latch, &measured, findings, passed_at_s, scoring)
+}
+
+/// Whether ownship, standing on, may act at a sample: within the action
+/// range, or giving way to another vessel then ([`rules::may_act`]).
+fn stand_on_may_act(
+    samples: &[EncounterSample],
+    giving_way: &[bool],
+    rules: &RuleParameters,
+) -> impl Fn(&EncounterSample) -> bool {
+    let acting_at: std::collections::HashSet<u64> = samples
+        .iter()
+        .zip(giving_way)
+        .filter(|(_, giving)| **giving)
+        .map(|(sample, _)| sample.time_s.to_bits())
+        .collect();
+    let rules = *rules;
+    move |s: &EncounterSample| {
+        rules::may_act(s.range_m(), acting_at.contains(&s.time_s.to_bits()), &rules)
+    }
+}
+
+/// The assessment from the measurements and findings: the safety score (0
+/// on hull contact), the overall product and the verdicts.
+fn assemble(
+    latch: &EncounterLatch,
+    measured: &Measurements,
+    findings: Findings,
+    passed_at_s: Option<f64>,
+    scoring: &ScoringParameters,
+) -> EncounterAssessment {
+    let safety = if measured.in_contact {
+        0.0
+    } else {
+        safety_score(measured.min_distance_m, scoring)
+    };
+    let Findings {
+        violations,
+        rule_13,
+        rule_14,
+        rule_15,
+        rule_16,
+        rule_17,
+    } = findings;
+    let overall = [rule_13, rule_14, rule_15, rule_16, rule_17]
+        .into_iter()
+        .flatten()
+        .fold(safety, |product, score| product * score)
+        .clamp(0.0, 1.0);
+    let compliant = violations.iter().all(|v| !v.is_rule_violation());
+    EncounterAssessment {
+        encounter: latch.encounter,
+        role: latch.encounter.role(),
+        min_distance_m: measured.min_distance_m,
+        time_of_min_s: measured.time_of_min_s,
+        latch_range_m: measured.latch_range_m,
+        latch_cpa_m: measured.latch_cpa_m,
+        passed_at_s,
+        action_time_s: measured.action_time_s,
+        action_range_m: measured.action_range_m,
+        max_course_change_rad: measured.max_course_change_rad,
+        max_speed_change_mps: measured.max_speed_change_mps,
+        first_turn_rad: measured.first_turn_rad,
+        passing_side: measured.passing_side,
+        crossed_ahead: measured.crossed_ahead_distance_m.is_some(),
+        crossed_ahead_distance_m: measured.crossed_ahead_distance_m,
+        violations,
+        scores: RuleScores {
+            safety,
+            rule_13,
+            rule_14,
+            rule_15,
+            rule_16,
+            rule_17,
+            overall,
+        },
+        safe: measured.min_distance_m >= scoring.clearance_m,
+        compliant,
+    }
+}

@@ -1,0 +1,190 @@
+//! Unit tests of compliance scoring.
+
+use super::measure::closest_approach;
+use super::*;
+use crate::{Encounter, PassingSide, VesselState};
+use glam::DVec2;
+use std::f64::consts::PI;
+
+/// Ownship north at 6 m/s from the origin; the target given; both hold
+/// course except that ownship takes `own_course_deg` from `turn_at_s`.
+fn run(
+    target: VesselState,
+    turn_at_s: f64,
+    own_course_deg: f64,
+    duration_s: f64,
+) -> Vec<EncounterSample> {
+    let mut own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let mut target = target;
+    let mut samples = Vec::new();
+    let mut time_s = 0.0;
+    while time_s <= duration_s {
+        if time_s >= turn_at_s {
+            own.course_rad = own_course_deg.to_radians();
+        }
+        samples.push(EncounterSample::new(time_s, own, target));
+        own = own.advanced(5.0);
+        target = target.advanced(5.0);
+        time_s += 5.0;
+    }
+    samples
+}
+
+fn head_on_target() -> VesselState {
+    VesselState::new(DVec2::new(0.0, 9000.0), PI, 6.0, 50.0)
+}
+
+#[test]
+fn default_parameters_are_valid() {
+    ScoringParameters::default().validate().expect("defaults");
+}
+
+#[test]
+fn misordered_ranges_are_named() {
+    let scoring = ScoringParameters {
+        near_miss_m: 300.0,
+        ..ScoringParameters::default()
+    };
+    let message = scoring.validate().expect_err("near miss beyond clearance");
+    assert!(message.to_string().contains("clearance_m"), "{message}");
+    let scoring = ScoringParameters {
+        penalties: PenaltyWeights {
+            port_turn: 1.5,
+            ..PenaltyWeights::default()
+        },
+        ..ScoringParameters::default()
+    };
+    let message = scoring.validate().expect_err("weight above 1").to_string();
+    assert!(message.contains("penalties.port_turn"), "{message}");
+}
+
+#[test]
+fn safety_score_breakpoints() {
+    let s = ScoringParameters::default();
+    assert_eq!(safety_score(f64::INFINITY, &s), 1.0);
+    assert_eq!(safety_score(s.clearance_m, &s), 1.0);
+    assert!((safety_score(150.0, &s) - 0.75).abs() < 1e-12);
+    assert_eq!(safety_score(s.near_miss_m, &s), s.near_miss_safety);
+    assert_eq!(safety_score(s.collision_m, &s), 0.0);
+    assert_eq!(safety_score(f64::NAN, &s), 0.0);
+}
+
+#[test]
+fn closest_approach_is_found_between_samples() {
+    // Head-on, 150 m lateral offset, 12 m/s closing: with 5 s samples the
+    // instants miss the exact pass; the interpolated minimum does not.
+    let target = VesselState::new(DVec2::new(150.0, 9033.0), PI, 6.0, 50.0);
+    let samples = run(target, f64::INFINITY, 0.0, 1500.0);
+    let (distance, time, _) = closest_approach(&samples).expect("samples");
+    assert!((distance - 150.0).abs() < 1e-6, "{distance}");
+    assert!((time - 9033.0 / 12.0).abs() < 1e-6, "{time}");
+}
+
+#[test]
+fn compliant_head_on() {
+    let rules = RuleParameters::default();
+    let samples = run(head_on_target(), 60.0, 35.0, 1500.0);
+    let latch = first_latch(&samples, &rules).expect("risk");
+    assert_eq!(latch.encounter, Encounter::HeadOn);
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert!(a.compliant && a.safe, "{:?}", a.violations);
+    assert!(a.violations.is_empty());
+    assert_eq!(a.passing_side, Some(PassingSide::Port));
+    assert_eq!(a.action_time_s, Some(60.0));
+    assert!((a.max_course_change_rad - 35f64.to_radians()).abs() < 1e-12);
+    assert!(a.passed_at_s.is_some());
+    assert_eq!(a.scores.rule_14, Some(1.0));
+    assert_eq!(a.scores.rule_16, Some(1.0));
+    assert_eq!(
+        (a.scores.rule_13, a.scores.rule_15, a.scores.rule_17),
+        (None, None, None)
+    );
+    assert_eq!(a.scores.overall, 1.0);
+}
+
+#[test]
+fn head_on_without_action_is_no_action_and_collision() {
+    let rules = RuleParameters::default();
+    let samples = run(head_on_target(), f64::INFINITY, 0.0, 1500.0);
+    let latch = first_latch(&samples, &rules).expect("risk");
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert!(a.violations.contains(&ComplianceViolation::NoAction));
+    assert!(
+        a.violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::Collision { .. }))
+    );
+    assert!(!a.compliant);
+    assert_eq!(a.passing_side, None);
+    assert_eq!(a.scores.safety, 0.0);
+    assert_eq!(a.scores.rule_16, Some(0.0));
+    assert_eq!(a.scores.overall, 0.0);
+}
+
+#[test]
+fn no_action_is_not_needed_when_the_pass_was_already_clear() {
+    // Predicted CPA 800 m to port: risk latched (under 1 nm) but clear of d_th.
+    let rules = RuleParameters::default();
+    let target = VesselState::new(DVec2::new(-800.0, 9000.0), PI, 6.0, 50.0);
+    let samples = run(target, f64::INFINITY, 0.0, 1500.0);
+    let latch = first_latch(&samples, &rules).expect("risk");
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert!(a.compliant, "{:?}", a.violations);
+    assert_eq!(a.action_time_s, None);
+    assert!((a.latch_cpa_m.expect("latched") - 800.0).abs() < 1e-6);
+    // The mirror image needs no action either, but passes starboard to
+    // starboard, which rule 14(a) names whatever the distance.
+    let target = VesselState::new(DVec2::new(800.0, 9000.0), PI, 6.0, 50.0);
+    let samples = run(target, f64::INFINITY, 0.0, 1500.0);
+    let latch = first_latch(&samples, &rules).expect("risk");
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert_eq!(
+        a.violations,
+        vec![ComplianceViolation::StarboardToStarboard]
+    );
+    assert_eq!(a.scores.rule_16, Some(1.0));
+    assert_eq!(a.scores.rule_14, Some(0.5));
+}
+
+#[test]
+fn role_none_scores_only_safety() {
+    let rules = RuleParameters::default();
+    let samples = run(head_on_target(), f64::INFINITY, 0.0, 100.0);
+    let latch = EncounterLatch::new(Encounter::None, &samples[0].own, 0.0);
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert!(a.scores.applicable().is_empty());
+    assert_eq!(a.scores.overall, a.scores.safety);
+    assert!(a.compliant);
+}
+
+#[test]
+fn empty_recording_finds_nothing() {
+    let rules = RuleParameters::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let latch = EncounterLatch::new(Encounter::HeadOn, &own, 0.0);
+    let a = assess_encounter(&[], &latch, &rules, &ScoringParameters::default());
+    assert_eq!(a.min_distance_m, f64::INFINITY);
+    assert!(a.violations.is_empty() && a.compliant && a.safe);
+    assert_eq!(a.scores.overall, 1.0);
+}
+
+#[test]
+fn displays_name_the_rule() {
+    let texts = [
+        ComplianceViolation::NoAction.to_string(),
+        ComplianceViolation::StarboardToStarboard.to_string(),
+        ComplianceViolation::StandOnTurnedToPort {
+            course_change_rad: -0.5,
+        }
+        .to_string(),
+    ];
+    for (text, rule) in texts.iter().zip(["rule 16", "rule 14", "rule 17(c)"]) {
+        assert!(text.contains(rule), "{text}");
+    }
+    assert!(
+        !ComplianceViolation::ClearanceViolated {
+            min_distance_m: 10.0
+        }
+        .is_rule_violation()
+    );
+}

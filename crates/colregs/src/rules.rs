@@ -1,0 +1,333 @@
+//! The rule book: the shared judgements every other part of the workspace
+//! makes about an encounter, written once.
+//!
+//! The prospective checks ([`check_motion`](crate::check_motion),
+//! [`check_alteration`](crate::check_alteration)), the retrospective scoring
+//! ([`assess_encounter`](crate::assess_encounter)) and the planner call these
+//! predicates instead of writing their own, so that they can never judge
+//! differently:
+//!
+//! | judgement | predicate | rule |
+//! |---|---|---|
+//! | the target inside the minimum threshold distance (MTD) | [`within_mtd`] | 7 |
+//! | course change from the course held when the encounter began | [`course_change_rad`] | 8, 16, 17 |
+//! | a detectable turn (beyond the 2° tolerance) | [`is_detectable_turn`] | 16 |
+//! | a turn to port of the reference course | [`is_port_turn`] | 14(a), 15, 17(c) |
+//! | a readily apparent alteration (30°) | [`is_readily_apparent`] | 8(b), 16 |
+//! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
+//! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
+//! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
+//! | ownship gives way in an encounter | [`gives_way`] | 16 |
+//! | ownship gives way to any target | [`giving_way_to_any`] | 16, 17 |
+//! | the give-way vessel inside the stand-on action range | [`within_action_range`] | 17(a)(ii) |
+//! | ownship may act (manoeuvre) in a stand-on encounter | [`may_act`] | 17(a)(ii), 17(b) |
+//! | ownship must keep its course and speed | [`must_stand_on`] | 17(a)(i) |
+//! | hull contact (collision) | [`contact_range_m`], [`in_contact`] | - |
+//!
+//! ## Collision
+//!
+//! A collision is **hull contact**: each vessel is taken as a disc whose
+//! diameter is its length, centred on its reference position, and the two
+//! are in contact when their centres are closer than the sum of the radii,
+//! `distance < (length_a + length_b) / 2` ([`in_contact`]). This is the only
+//! definition of collision in the workspace. The velocity obstacle's disc of
+//! radius `length_a + length_b` (`docs/architecture.md`, decision 3) is a
+//! safety margin the planner keeps, not a collision test; the clearance
+//! `d_th` is the distance the planner and the scoring require, also not a
+//! collision test.
+
+use crate::encounter::{Encounter, Role};
+use crate::latch::EncounterLatch;
+use crate::parameters::RuleParameters;
+use glam::DVec2;
+use std::f64::consts::PI;
+use vorrt_geometry::angle;
+
+/// Whether a target at `range_m` is inside the minimum threshold distance
+/// ([`mtd_m`](RuleParameters::mtd_m)): nearer, it can be a risk of collision
+/// (rule 7) and an encounter; farther, it is not yet one.
+///
+/// ```
+/// use vorrt_colregs::{rules::within_mtd, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(within_mtd(params.mtd_m - 1.0, &params));
+/// assert!(!within_mtd(params.mtd_m, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn within_mtd(range_m: f64, parameters: &RuleParameters) -> bool {
+    range_m < parameters.mtd_m
+}
+
+/// The signed course change from the reference course (the course held when
+/// the encounter began, [`EncounterLatch::reference_course_rad`]) to
+/// `course_rad`, in `(-π, π]`: positive to starboard, negative to port.
+///
+/// ```
+/// use vorrt_colregs::rules::course_change_rad;
+/// let change = course_change_rad(350f64.to_radians(), 20f64.to_radians());
+/// assert!((change - 30f64.to_radians()).abs() < 1e-12);
+/// ```
+#[inline]
+#[must_use]
+pub fn course_change_rad(reference_course_rad: f64, course_rad: f64) -> f64 {
+    angle::signed_turn(reference_course_rad, course_rad)
+}
+
+/// Whether a course change (from [`course_change_rad`]) is a turn at all:
+/// larger than [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)
+/// (2° by default) either way. Smaller changes are not detectable.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_detectable_turn, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(!is_detectable_turn(1f64.to_radians(), &params));
+/// assert!(is_detectable_turn(-5f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_detectable_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool {
+    course_change_rad.abs() > parameters.turn_tolerance_rad
+}
+
+/// Whether a course change (from [`course_change_rad`], judged from the
+/// reference course) is a turn to port: more than
+/// [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) to port. A
+/// return toward the reference course after a starboard turn is not a port
+/// turn; any course to port of the reference is.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_port_turn, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(is_port_turn(-10f64.to_radians(), &params));
+/// assert!(!is_port_turn(-1f64.to_radians(), &params)); // within the 2° tolerance
+/// assert!(!is_port_turn(10f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool {
+    course_change_rad < -parameters.turn_tolerance_rad
+}
+
+/// Rules 8(b), 16: whether a course change (either way) is large enough to be
+/// readily apparent to another vessel: at least
+/// [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30° by default).
+///
+/// ```
+/// use vorrt_colregs::{rules::is_readily_apparent, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(is_readily_apparent(35f64.to_radians(), &params));
+/// assert!(!is_readily_apparent(10f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) -> bool {
+    course_change_rad.abs() >= parameters.apparent_turn_rad
+}
+
+/// Whether a speed change from the reference speed (either way) is beyond
+/// [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps):
+/// an action, and for a stand-on vessel a failure to keep her speed.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_speed_change, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(is_speed_change(-3.0, &params));
+/// assert!(!is_speed_change(0.5, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_speed_change(speed_change_mps: f64, parameters: &RuleParameters) -> bool {
+    speed_change_mps.abs() > parameters.stand_on_speed_tolerance_mps
+}
+
+/// Rule 17(a)(i): whether a course change (from [`course_change_rad`]) is
+/// more than a stand-on vessel may drift while she keeps her course
+/// ([`stand_on_course_tolerance_rad`](RuleParameters::stand_on_course_tolerance_rad)).
+///
+/// ```
+/// use vorrt_colregs::{rules::is_stand_on_course_change, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(is_stand_on_course_change(40f64.to_radians(), &params));
+/// assert!(!is_stand_on_course_change(-10f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_stand_on_course_change(course_change_rad: f64, parameters: &RuleParameters) -> bool {
+    course_change_rad.abs() > parameters.stand_on_course_tolerance_rad
+}
+
+/// Rule 17(c): whether the target lies on ownship's port side, seen from
+/// `own_position_m` on the reference course (the course held when the
+/// encounter began): relative bearing strictly between 180° and 360°. Dead
+/// ahead and dead astern are on neither side. The reference course, not the
+/// present one, because a port turn can bring a port-side vessel onto the
+/// bow, which is what rule 17(c) forbids.
+///
+/// ```
+/// use vorrt_colregs::rules::is_on_port_side;
+/// use glam::DVec2;
+/// assert!(is_on_port_side(DVec2::ZERO, 0.0, DVec2::new(-1000.0, 1000.0)));
+/// assert!(!is_on_port_side(DVec2::ZERO, 0.0, DVec2::new(1000.0, 1000.0)));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_on_port_side(
+    own_position_m: DVec2,
+    reference_course_rad: f64,
+    target_position_m: DVec2,
+) -> bool {
+    angle::relative_bearing(own_position_m, reference_course_rad, target_position_m) > PI
+}
+
+/// Whether ownship gives way in `encounter` (head-on, crossing give-way,
+/// overtaking: rule 16).
+///
+/// ```
+/// use vorrt_colregs::{rules::gives_way, Encounter};
+/// assert!(gives_way(Encounter::HeadOn));
+/// assert!(!gives_way(Encounter::CrossingStandOn));
+/// ```
+#[inline]
+#[must_use]
+pub fn gives_way(encounter: Encounter) -> bool {
+    encounter.role() == Role::GiveWay
+}
+
+/// Whether ownship gives way to any target among the encounters in force.
+///
+/// ```
+/// use vorrt_colregs::{rules::giving_way_to_any, Encounter, EncounterLatch, VesselState};
+/// use glam::DVec2;
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let stand_on = EncounterLatch::new(Encounter::CrossingStandOn, &own, 0.0);
+/// let give_way = EncounterLatch::new(Encounter::CrossingGiveWay, &own, 0.0);
+/// let latches = [Some(stand_on), None, Some(give_way)];
+/// assert!(giving_way_to_any(latches.iter().flatten()));
+/// assert!(!giving_way_to_any(latches[..2].iter().flatten()));
+/// ```
+#[inline]
+#[must_use]
+pub fn giving_way_to_any<'a>(latches: impl IntoIterator<Item = &'a EncounterLatch>) -> bool {
+    latches.into_iter().any(|latch| gives_way(latch.encounter))
+}
+
+/// Rule 17(a)(ii): whether the range to the give-way vessel is within
+/// [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m), so
+/// that a stand-on vessel may act on her own.
+///
+/// ```
+/// use vorrt_colregs::{rules::within_action_range, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(within_action_range(params.stand_on_action_range_m, &params));
+/// assert!(!within_action_range(params.stand_on_action_range_m + 1.0, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn within_action_range(range_m: f64, parameters: &RuleParameters) -> bool {
+    range_m <= parameters.stand_on_action_range_m
+}
+
+/// Whether ownship, in a stand-on encounter with a target at `range_m`, may
+/// act (manoeuvre): the target is within the stand-on action range (rule
+/// 17(a)(ii), 17(b)), or ownship gives way to some other target
+/// (`giving_way_to_any`, see [`giving_way_to_any`]): with several targets, a
+/// vessel that must give way to one of them cannot also keep its course for
+/// another, so rule 17 yields to the duty to keep out of the way. Rule 17(c)
+/// holds either way.
+///
+/// ```
+/// use vorrt_colregs::{rules::may_act, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(!may_act(10_000.0, false, &params));
+/// assert!(may_act(10_000.0, true, &params));
+/// assert!(may_act(1_000.0, false, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn may_act(range_m: f64, giving_way_to_any: bool, parameters: &RuleParameters) -> bool {
+    giving_way_to_any || within_action_range(range_m, parameters)
+}
+
+/// Rule 17(a)(i): whether ownship must keep its course and speed in
+/// `encounter`: it stands on and may not act ([`may_act`]).
+///
+/// ```
+/// use vorrt_colregs::{rules::must_stand_on, Encounter};
+/// assert!(must_stand_on(Encounter::BeingOvertaken, false));
+/// assert!(!must_stand_on(Encounter::BeingOvertaken, true));
+/// assert!(!must_stand_on(Encounter::HeadOn, false));
+/// ```
+#[inline]
+#[must_use]
+pub fn must_stand_on(encounter: Encounter, may_act: bool) -> bool {
+    encounter.role() == Role::StandOn && !may_act
+}
+
+/// The range under which two vessels of lengths `length_a_m` and `length_b_m`
+/// are in hull contact: `(length_a + length_b) / 2`, the sum of the radii of
+/// the discs whose diameters are the lengths (see the [module
+/// documentation](self)).
+///
+/// ```
+/// use vorrt_colregs::rules::contact_range_m;
+/// assert_eq!(contact_range_m(150.0, 150.0), 150.0);
+/// assert_eq!(contact_range_m(50.0, 100.0), 75.0);
+/// ```
+#[inline]
+#[must_use]
+pub fn contact_range_m(length_a_m: f64, length_b_m: f64) -> f64 {
+    0.5 * (length_a_m + length_b_m)
+}
+
+/// Whether two vessels of lengths `length_a_m` and `length_b_m`, their
+/// reference positions `distance_m` apart, are in hull contact: a collision,
+/// `distance_m < contact_range_m(length_a_m, length_b_m)`.
+///
+/// ```
+/// use vorrt_colregs::rules::in_contact;
+/// // Two 150 m ships passing 60 m apart collide.
+/// assert!(in_contact(60.0, 150.0, 150.0));
+/// assert!(!in_contact(150.0, 150.0, 150.0));
+/// ```
+#[inline]
+#[must_use]
+pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
+    distance_m < contact_range_m(length_a_m, length_b_m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tolerances_bound_each_judgement_exclusively() {
+        let params = RuleParameters::default();
+        let tolerance = params.turn_tolerance_rad;
+        assert!(!is_detectable_turn(tolerance, &params));
+        assert!(!is_port_turn(-tolerance, &params));
+        assert!(is_port_turn(-tolerance - 1e-9, &params));
+        assert!(is_readily_apparent(-params.apparent_turn_rad, &params));
+        assert!(!is_speed_change(
+            params.stand_on_speed_tolerance_mps,
+            &params
+        ));
+        assert!(!is_stand_on_course_change(
+            params.stand_on_course_tolerance_rad,
+            &params
+        ));
+    }
+
+    #[test]
+    fn dead_astern_is_on_neither_side() {
+        assert!(!is_on_port_side(DVec2::ZERO, 0.0, DVec2::new(0.0, -1000.0)));
+        assert!(!is_on_port_side(DVec2::ZERO, 0.0, DVec2::new(0.0, 1000.0)));
+    }
+
+    #[test]
+    fn contact_is_strict() {
+        assert!(in_contact(74.999, 50.0, 100.0));
+        assert!(!in_contact(75.0, 50.0, 100.0));
+        assert!(!in_contact(f64::NAN, 50.0, 100.0));
+    }
+}
