@@ -649,7 +649,7 @@ mod tests {
             turn_radius_m: 400.0,
         };
         let leg = model
-            .steer(pose(0.0, 0.0, 0.0), DVec2::new(0.0, -3000.0), 5.0, 100.0)
+            .steer(pose(0.0, 0.0, 0.0), DVec2::new(-3000.0, -100.0), 5.0, 100.0)
             .unwrap();
         assert!((leg.length_m() - 100.0).abs() < 1e-9);
         assert_eq!(leg.straight_m, 0.0);
