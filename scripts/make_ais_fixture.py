@@ -53,7 +53,7 @@ VESSELS = {
                 bow=80, stern=20, cls="A", talker="VDO", last=T0 - 4),
     "head_on": dict(mmsi=244000002, at_t0=offset(OWN_T0, 8.0, 0.05), course=270.0, speed=10.0,
                     name="NORTHSEA TRADER", bow=120, stern=30, cls="A", talker="VDM", last=T0 - 11),
-    "crossing": dict(mmsi=338000003, at_t0=offset(OWN_T0, 2.5, -1.66), course=0.0, speed=8.0,
+    "crossing": dict(mmsi=338000003, at_t0=offset(OWN_T0, 3.5, -2.3), course=0.0, speed=8.0,
                      name="SEA BREEZE", bow=12, stern=3, cls="B", talker="VDM", last=T0 - 23),
     "far": dict(mmsi=211000004, at_t0=offset(OWN_T0, 0.0, 30.0), course=180.0, speed=9.0,
                 name="FAR AWAY", bow=20, stern=5, cls="B19", talker="VDM", last=T0 - 40),
