@@ -209,7 +209,7 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         }
         targets.push(target);
     }
-    let start_time = at_unix_s.map(|at| describe_time(at));
+    let start_time = at_unix_s.map(describe_time);
     let scenario = Scenario {
         name: format!("ais-{}", options.ownship_mmsi),
         description: Some(format!(

@@ -96,6 +96,15 @@ pub struct AisLog {
     pub last_time_unix_s: Option<f64>,
 }
 
+/// A position report's fields as the `ais` crate decodes them.
+struct RawPosition {
+    mmsi: u32,
+    lat_lon: (Option<f32>, Option<f32>),
+    course_deg: Option<f32>,
+    speed_kn: Option<f32>,
+    heading_deg: Option<u16>,
+}
+
 /// The envelope fields of a sentence the reader checks itself.
 struct Envelope {
     count: u8,
@@ -231,17 +240,14 @@ impl Reader {
         track
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn position(
-        &mut self,
-        line: usize,
-        own: bool,
-        mmsi: u32,
-        lat_lon: (Option<f32>, Option<f32>),
-        course_deg: Option<f32>,
-        speed_kn: Option<f32>,
-        heading_deg: Option<u16>,
-    ) {
+    fn position(&mut self, line: usize, own: bool, raw: RawPosition) {
+        let RawPosition {
+            mmsi,
+            lat_lon,
+            course_deg,
+            speed_kn,
+            heading_deg,
+        } = raw;
         let time_unix_s = self.time_unix_s;
         let (Some(lat), Some(lon)) = lat_lon else {
             self.track(mmsi, own);
@@ -296,30 +302,36 @@ impl Reader {
             AisMessage::PositionReport(report) => self.position(
                 line,
                 own,
-                report.mmsi,
-                (report.latitude, report.longitude),
-                report.course_over_ground,
-                report.speed_over_ground,
-                report.true_heading,
+                RawPosition {
+                    mmsi: report.mmsi,
+                    lat_lon: (report.latitude, report.longitude),
+                    course_deg: report.course_over_ground,
+                    speed_kn: report.speed_over_ground,
+                    heading_deg: report.true_heading,
+                },
             ),
             AisMessage::StandardClassBPositionReport(report) => self.position(
                 line,
                 own,
-                report.mmsi,
-                (report.latitude, report.longitude),
-                report.course_over_ground,
-                report.speed_over_ground,
-                report.true_heading,
+                RawPosition {
+                    mmsi: report.mmsi,
+                    lat_lon: (report.latitude, report.longitude),
+                    course_deg: report.course_over_ground,
+                    speed_kn: report.speed_over_ground,
+                    heading_deg: report.true_heading,
+                },
             ),
             AisMessage::ExtendedClassBPositionReport(report) => {
                 self.position(
                     line,
                     own,
-                    report.mmsi,
-                    (report.latitude, report.longitude),
-                    report.course_over_ground,
-                    report.speed_over_ground,
-                    report.true_heading,
+                    RawPosition {
+                        mmsi: report.mmsi,
+                        lat_lon: (report.latitude, report.longitude),
+                        course_deg: report.course_over_ground,
+                        speed_kn: report.speed_over_ground,
+                        heading_deg: report.true_heading,
+                    },
                 );
                 self.static_data(
                     own,

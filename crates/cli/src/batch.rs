@@ -268,12 +268,11 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
     let progress = Progress::new(items.len());
     let export_error = std::sync::Mutex::new(None);
     let export = |item: &BatchItem, record: &vorrt_scenarios::SimulationRecord| {
-        if args.trajectories {
-            if let Err(error) = write_run_trajectory(item, record, &args.out) {
-                if let Ok(mut first) = export_error.lock() {
-                    first.get_or_insert(error);
-                }
-            }
+        if args.trajectories
+            && let Err(error) = write_run_trajectory(item, record, &args.out)
+            && let Ok(mut first) = export_error.lock()
+        {
+            first.get_or_insert(error);
         }
     };
     let rows = pool.install(|| {

@@ -45,10 +45,10 @@ fn parse_goal(text: &str) -> Result<(f64, f64), CliError> {
 }
 
 fn parse_time(text: &str) -> Result<f64, CliError> {
-    if let Ok(unix_s) = text.parse::<f64>() {
-        if unix_s.is_finite() {
-            return Ok(unix_s);
-        }
+    if let Ok(unix_s) = text.parse::<f64>()
+        && unix_s.is_finite()
+    {
+        return Ok(unix_s);
     }
     let time = vorrt_scenarios::geo::parse_utc_time(text)
         .map_err(|problem| CliError::BadInput(format!("--at {problem}")))?;

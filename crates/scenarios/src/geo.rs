@@ -244,7 +244,7 @@ fn project_vessel(
         check_lat_lon(lat_lon).map_err(|problem| (field(name), problem))?;
         let position_m = frame.to_local_m(lat_lon.0, lat_lon.1);
         let distance_nm = position_m.length() / units::NAUTICAL_MILE_M;
-        if !(distance_nm <= MAX_GEO_EXTENT_NM) {
+        if distance_nm.is_nan() || distance_nm > MAX_GEO_EXTENT_NM {
             return Err((
                 field(name),
                 format!(
