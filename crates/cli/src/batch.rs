@@ -170,7 +170,7 @@ pub struct BatchArgs {
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
     /// Also write every run's trajectory.csv, into
-    /// DIR/runs/<index>-<scenario name>/.
+    /// `DIR/runs/<index>-<scenario name>/`.
     #[arg(long)]
     pub trajectories: bool,
 }
