@@ -178,3 +178,21 @@ proptest! {
         let _ = build_scenario(&log, &options());
     }
 }
+
+/// Fragments out of sequence are counted as malformed, not handed to the
+/// `ais` crate, whose own check subtracts fragment numbers as `u8` and
+/// overflows (a panic in debug builds) on a fragment numbered below the last.
+#[test]
+fn out_of_sequence_fragments_are_malformed() {
+    let sentence = |count: u8, number: u8| {
+        let body = format!("AIVDM,{count},{number},7,A,0000,0");
+        format!("!{body}*{:02X}\n", vorrt_ais::tag_block::nmea_checksum(&body))
+    };
+    let log: String = [(5, 1), (5, 2), (5, 3), (5, 4), (5, 3), (5, 0), (5, 6)]
+        .into_iter()
+        .map(|(count, number)| sentence(count, number))
+        .collect();
+    let counts = read_log(&log).counts;
+    assert_eq!(counts.malformed, 3, "{counts:?}");
+    assert_eq!(counts.lines, 7);
+}
