@@ -186,7 +186,10 @@ proptest! {
 fn out_of_sequence_fragments_are_malformed() {
     let sentence = |count: u8, number: u8| {
         let body = format!("AIVDM,{count},{number},7,A,0000,0");
-        format!("!{body}*{:02X}\n", vorrt_ais::tag_block::nmea_checksum(&body))
+        format!(
+            "!{body}*{:02X}\n",
+            vorrt_ais::tag_block::nmea_checksum(&body)
+        )
     };
     let log: String = [(5, 1), (5, 2), (5, 3), (5, 4), (5, 3), (5, 0), (5, 6)]
         .into_iter()
