@@ -3,10 +3,10 @@
 in the English Channel, encoded with pyais (MIT; `pip install pyais`).
 
 Ownship (MMSI 235000001, class A, !AIVDO) steams east at 12 kn; a class A
-target (244000002) comes the other way at 10 kn almost on ownship's track
-(head-on); a class B yacht (338000003, types 18 and 24) crosses from the south,
-heading north at 8 kn, from ownship's starboard side (crossing, ownship gives
-way). A fourth vessel (211000004, class B extended, type 19) is 30 nm away,
+target (244000002) comes the other way at 10 kn 370 m north of ownship's
+track (head-on); a class B yacht (338000003, types 18 and 24) crosses from the
+north, heading south at 8 kn, from ownship's port side (crossing, ownship
+stands on). A fourth vessel (211000004, class B extended, type 19) is 30 nm away,
 outside the default import range. The log covers ten minutes up to
 2024-05-01T12:00:00Z: position reports every 30 s (class A) or 60 s (class B),
 static data (type 5 in two sentences, type 24 parts A and B), every line behind
@@ -51,9 +51,9 @@ OWN_T0 = (50.30, -1.00)
 VESSELS = {
     "own": dict(mmsi=235000001, at_t0=OWN_T0, course=90.0, speed=12.0, name="VORRT TRIAL",
                 bow=80, stern=20, cls="A", talker="VDO", last=T0 - 4),
-    "head_on": dict(mmsi=244000002, at_t0=offset(OWN_T0, 8.0, 0.05), course=270.0, speed=10.0,
+    "head_on": dict(mmsi=244000002, at_t0=offset(OWN_T0, 8.0, 0.2), course=270.0, speed=10.0,
                     name="NORTHSEA TRADER", bow=120, stern=30, cls="A", talker="VDM", last=T0 - 11),
-    "crossing": dict(mmsi=338000003, at_t0=offset(OWN_T0, 3.5, -2.3), course=0.0, speed=8.0,
+    "crossing": dict(mmsi=338000003, at_t0=offset(OWN_T0, 4.0, 2.5), course=180.0, speed=8.0,
                      name="SEA BREEZE", bow=12, stern=3, cls="B", talker="VDM", last=T0 - 23),
     "far": dict(mmsi=211000004, at_t0=offset(OWN_T0, 0.0, 30.0), course=180.0, speed=9.0,
                 name="FAR AWAY", bow=20, stern=5, cls="B19", talker="VDM", last=T0 - 40),
