@@ -5,7 +5,7 @@
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 #
 # SECONDS_PER_TARGET defaults to 600. TARGETs default to every target
-# (scenario_parser, planner). Needs `cargo install cargo-fuzz --locked`.
+# (scenario_parser, planner, ais_reader). Needs `cargo install cargo-fuzz --locked`.
 # The corpora grow in fuzz/corpus/<target>/ (git-ignored), seeded from the
 # committed fuzz/seeds/<target>/; a crash is saved under fuzz/artifacts/.
 # libFuzzer's last lines (`#N ... DONE`) give the executions; each run's log
@@ -16,7 +16,7 @@ seconds="${1:-600}"
 shift || true
 targets=("$@")
 if [ "${#targets[@]}" -eq 0 ]; then
-    targets=(scenario_parser planner)
+    targets=(scenario_parser planner ais_reader)
 fi
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -25,7 +25,7 @@ mkdir -p target/logs
 
 for target in "${targets[@]}"; do
     mkdir -p "corpus/$target"
-    cp -n "seeds/$target"/*.ron "corpus/$target/" 2>/dev/null || true
+    cp -n "seeds/$target"/* "corpus/$target/" 2>/dev/null || true
     echo "fuzzing $target for $seconds s"
     # -timeout: any single input taking more than 10 s counts as a hang.
     set +e

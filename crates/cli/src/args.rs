@@ -35,7 +35,9 @@ pub enum Command {
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
     /// against d_th, path overhead, planner calls and time) and writes
-    /// DIR/report.json, DIR/trajectories.svg/.png and DIR/distance.svg/.png.
+    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
+    /// DIR/trajectory.csv; for a geographic scenario also
+    /// DIR/trajectory.geojson and DIR/trajectory.gpx.
     #[command(after_help = EXIT_CODES)]
     Simulate {
         /// The scenario file (RON; see docs/scenario-format.md).
@@ -50,7 +52,8 @@ pub enum Command {
     /// Plan once from the start state and print the plan as JSON.
     ///
     /// Prints waypoints (time s, east and north m, course deg) and search
-    /// statistics on stdout. When no safe path exists, prints the planner's
+    /// statistics on stdout; for a geographic scenario, --format geojson
+    /// prints a GeoJSON LineString and --format gpx a GPX 1.1 route instead. When no safe path exists, prints the planner's
     /// reason on stderr and exits 1.
     #[command(after_help = EXIT_CODES)]
     Plan {
@@ -59,6 +62,9 @@ pub enum Command {
         /// Planner seed [default: the scenario's `seed`, else 1].
         #[arg(long, value_name = "N")]
         seed: Option<u64>,
+        /// Output format (geojson and gpx need a geographic scenario).
+        #[arg(long, value_enum, default_value_t = PlanFormat::Json)]
+        format: PlanFormat,
     },
     /// Validate scenario files.
     ///
@@ -106,8 +112,29 @@ pub enum Command {
     /// would run with the same options).
     #[command(after_help = EXIT_CODES)]
     Generate(crate::batch::GenerateArgs),
+    /// Turn an AIS log (NMEA 0183) into a geographic scenario file.
+    ///
+    /// Reads !AIVDM/!AIVDO message types 1, 2, 3, 5, 18, 19 and 24 (multi-
+    /// sentence messages reassembled, NMEA 4.0 tag block times), estimates
+    /// every vessel's state at the chosen time by dead reckoning from its last
+    /// position report, and writes ownship (with the goal given) and every
+    /// vessel within the range. Skipped lines are counted on stderr. See
+    /// docs/real-data.md.
+    #[command(after_help = EXIT_CODES)]
+    ImportAis(crate::import_ais::ImportAisArgs),
     /// Merge the outputs of several batch shards into one rows.csv,
     /// summary.json and plots.
     #[command(after_help = EXIT_CODES)]
     Merge(crate::batch::MergeArgs),
+}
+
+/// What `vorrt plan` prints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum PlanFormat {
+    /// The plan schema of docs/report-format.md.
+    Json,
+    /// A GeoJSON Feature with the plan's LineString (geographic scenarios).
+    Geojson,
+    /// A GPX 1.1 route (geographic scenarios).
+    Gpx,
 }

@@ -169,6 +169,10 @@ pub struct BatchArgs {
     /// Output folder.
     #[arg(long, value_name = "DIR")]
     pub out: PathBuf,
+    /// Also write every run's trajectory.csv, into
+    /// `DIR/runs/<index>-<scenario name>/`.
+    #[arg(long)]
+    pub trajectories: bool,
 }
 
 /// `vorrt generate`.
@@ -262,7 +266,21 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
         items.len()
     );
     let progress = Progress::new(items.len());
-    let rows = pool.install(|| batch::run_batch(&items, &|done, row| progress.report(done, row)));
+    let export_error = std::sync::Mutex::new(None);
+    let export = |item: &BatchItem, record: &vorrt_scenarios::SimulationRecord| {
+        if args.trajectories
+            && let Err(error) = write_run_trajectory(item, record, &args.out)
+            && let Ok(mut first) = export_error.lock()
+        {
+            first.get_or_insert(error);
+        }
+    };
+    let rows = pool.install(|| {
+        batch::run_batch_with(&items, &|done, row| progress.report(done, row), &export)
+    });
+    if let Some(error) = export_error.into_inner().ok().flatten() {
+        return Err(error);
+    }
     progress.finish();
     let wall_time_s = started.elapsed().as_secs_f64();
     let summary = write_all(&rows, &args.out)?;
@@ -319,6 +337,23 @@ pub fn merge_command(args: &MergeArgs) -> Result<ExitStatus, CliError> {
         args.out.display()
     );
     Ok(ExitStatus::Success)
+}
+
+/// Writes `trajectory.csv` of one batch run into `DIR/runs/<index>-<name>/`.
+fn write_run_trajectory(
+    item: &BatchItem,
+    record: &vorrt_scenarios::SimulationRecord,
+    out: &Path,
+) -> Result<(), CliError> {
+    let dir = out.join("runs").join(format!(
+        "{}-{}",
+        item.index,
+        folder_name(&item.scenario.name)
+    ));
+    std::fs::create_dir_all(&dir).map_err(output_error(&dir))?;
+    let text = crate::export::trajectory_csv(&item.scenario, record)?;
+    let path = dir.join(crate::export::TRAJECTORY_CSV);
+    std::fs::write(&path, text).map_err(output_error(&path))
 }
 
 fn write_scenario(item: &BatchItem, dir: &Path) -> Result<PathBuf, CliError> {

@@ -1,6 +1,6 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command};
+use crate::args::{Cli, Command, PlanFormat};
 use crate::report::{PlanOutput, Report};
 use crate::{demo, plot};
 use std::fmt;
@@ -83,7 +83,11 @@ pub fn run(cli: Cli) -> Result<ExitStatus, CliError> {
             seed,
             out,
         } => simulate_command(&scenario, seed, out.as_deref()),
-        Command::Plan { scenario, seed } => plan_command(&scenario, seed),
+        Command::Plan {
+            scenario,
+            seed,
+            format,
+        } => plan_command(&scenario, seed, format),
         Command::Check { scenarios } => Ok(check_command(&scenarios)),
         Command::Demo {
             out,
@@ -99,6 +103,7 @@ pub fn run(cli: Cli) -> Result<ExitStatus, CliError> {
         Command::Batch(args) => crate::batch::batch_command(&args),
         Command::Generate(args) => crate::batch::generate_command(&args),
         Command::Merge(args) => crate::batch::merge_command(&args),
+        Command::ImportAis(args) => crate::import_ais::import_ais_command(&args),
     }
 }
 
@@ -151,7 +156,8 @@ pub const OUTPUT_FILES: [&str; 5] = [
     "distance.png",
 ];
 
-/// Writes `report.json` and the four plots of `run` into `dir` (created if needed).
+/// Writes `report.json`, the four plots and the trajectory exports
+/// ([`crate::export::write_trajectories`]) of `run` into `dir` (created if needed).
 ///
 /// # Errors
 /// [`CliError::Output`] when a file cannot be written.
@@ -164,7 +170,9 @@ pub fn write_outputs(scenario: &Scenario, run: &Run, dir: &Path) -> Result<(), C
     std::fs::write(&report_path, json + "\n").map_err(|error| {
         CliError::Output(format!("cannot write {}: {error}", report_path.display()))
     })?;
-    plot::write_plots(scenario, &run.record, &run.evaluation, dir).map_err(CliError::Output)
+    plot::write_plots(scenario, &run.record, &run.evaluation, dir).map_err(CliError::Output)?;
+    crate::export::write_trajectories(scenario, run, dir)?;
+    Ok(())
 }
 
 /// A file-system friendly version of a scenario name.
@@ -291,7 +299,16 @@ fn simulate_command(
     );
     write_outputs(&scenario, &run, &dir)?;
     print!("{}", summary_table(&run.report));
-    println!("\nwrote {}/{{{}}}", dir.display(), OUTPUT_FILES.join(","));
+    let exports = if scenario.is_geographic() {
+        ",trajectory.csv,trajectory.geojson,trajectory.gpx"
+    } else {
+        ",trajectory.csv"
+    };
+    println!(
+        "\nwrote {}/{{{}{exports}}}",
+        dir.display(),
+        OUTPUT_FILES.join(",")
+    );
     if run.report.reached_goal_safely {
         Ok(ExitStatus::Success)
     } else {
@@ -300,7 +317,11 @@ fn simulate_command(
     }
 }
 
-fn plan_command(path: &Path, seed: Option<u64>) -> Result<ExitStatus, CliError> {
+fn plan_command(
+    path: &Path,
+    seed: Option<u64>,
+    format: PlanFormat,
+) -> Result<ExitStatus, CliError> {
     let scenario = load(path)?;
     let seed = seed_for(&scenario, seed);
     let config = scenario
@@ -318,10 +339,17 @@ fn plan_command(path: &Path, seed: Option<u64>) -> Result<ExitStatus, CliError> 
             }
             _ => CliError::BadInput(format!("{}: {error}", scenario.source)),
         })?;
-    let output = PlanOutput::new(&scenario, seed, d_th_m, &plan);
-    let json = serde_json::to_string_pretty(&output)
-        .map_err(|error| CliError::Output(format!("cannot write the plan as JSON: {error}")))?;
-    println!("{json}");
+    let text = match format {
+        PlanFormat::Json => {
+            let output = PlanOutput::new(&scenario, seed, d_th_m, &plan);
+            serde_json::to_string_pretty(&output).map_err(|error| {
+                CliError::Output(format!("cannot write the plan as JSON: {error}"))
+            })?
+        }
+        PlanFormat::Geojson => crate::export::plan_geojson(&scenario, seed, &plan)?,
+        PlanFormat::Gpx => crate::export::plan_gpx(&scenario, &plan)?,
+    };
+    println!("{text}");
     Ok(ExitStatus::Success)
 }
 

@@ -85,7 +85,7 @@ fn load_group(dir: &Path, group: &str) -> Result<Vec<Entry>, CliError> {
 
 /// The groups of the bundled fixtures that `demo` runs by default; other
 /// folders there (golden results and the like) hold no scenarios.
-pub const BUNDLED_GROUPS: [&str; 2] = ["paper", "imazu"];
+pub const BUNDLED_GROUPS: [&str; 3] = ["paper", "imazu", "geo"];
 
 /// The bundled scenarios: [`BUNDLED_GROUPS`] of `dir`.
 fn collect_bundled(dir: &Path) -> Result<Vec<Entry>, CliError> {

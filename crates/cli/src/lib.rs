@@ -12,6 +12,8 @@
 //! | [`plot`] | trajectory and distance plots, SVG and PNG |
 //! | [`demo`] | every bundled scenario in parallel, and `index.html` |
 //! | [`batch`] | Monte Carlo campaigns: `batch`, `generate`, `merge`, histograms |
+//! | [`export`] | `trajectory.csv`, `trajectory.geojson`, `trajectory.gpx`; the plan as GeoJSON or GPX |
+//! | [`import_ais`] | `import-ais`: an AIS log into a geographic scenario |
 //! | [`font`] | the bundled DejaVu Sans font for PNG text |
 //!
 //! [`main_entry`] is the whole program: the workspace root package's `vorrt`
@@ -25,7 +27,9 @@ pub mod args;
 pub mod batch;
 pub mod commands;
 pub mod demo;
+pub mod export;
 pub mod font;
+pub mod import_ais;
 pub mod plot;
 pub mod report;
 

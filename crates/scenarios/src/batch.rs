@@ -27,7 +27,7 @@ use crate::evaluation::{Evaluation, evaluate};
 use crate::generator::{GeneratorError, GeneratorSpec, run_seed};
 use crate::io::load_dir;
 use crate::scenario::Scenario;
-use crate::simulation::simulate;
+use crate::simulation::{SimulationRecord, simulate};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
@@ -360,11 +360,23 @@ impl BatchRow {
 /// Simulates and evaluates one scenario.
 #[must_use]
 pub fn run_item(item: &BatchItem) -> BatchRow {
+    run_item_with(item, &|_, _| {})
+}
+
+/// As [`run_item`], handing the run's record to `on_record` first (to export
+/// its trajectories).
+pub fn run_item_with(item: &BatchItem, on_record: &RecordSink<'_>) -> BatchRow {
     match simulate(&item.scenario, item.seed) {
-        Ok(record) => BatchRow::from_evaluation(item, &evaluate(&item.scenario, &record)),
+        Ok(record) => {
+            on_record(item, &record);
+            BatchRow::from_evaluation(item, &evaluate(&item.scenario, &record))
+        }
         Err(error) => BatchRow::failed(item, error.to_string()),
     }
 }
+
+/// What [`run_batch_with`] hands every run's record to.
+pub type RecordSink<'a> = dyn Fn(&BatchItem, &SimulationRecord) + Sync + 'a;
 
 /// Runs every item in parallel on rayon's current pool; `progress` is called
 /// after each run with the number done so far and its row. The rows come
@@ -373,11 +385,21 @@ pub fn run_batch(
     items: &[BatchItem],
     progress: &(dyn Fn(usize, &BatchRow) + Sync),
 ) -> Vec<BatchRow> {
+    run_batch_with(items, progress, &|_, _| {})
+}
+
+/// As [`run_batch`], handing every run's record to `on_record` (from the
+/// worker that ran it).
+pub fn run_batch_with(
+    items: &[BatchItem],
+    progress: &(dyn Fn(usize, &BatchRow) + Sync),
+    on_record: &RecordSink<'_>,
+) -> Vec<BatchRow> {
     let done = std::sync::atomic::AtomicUsize::new(0);
     items
         .par_iter()
         .map(|item| {
-            let row = run_item(item);
+            let row = run_item_with(item, on_record);
             let count = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(count, &row);
             row

@@ -23,16 +23,19 @@ fn either_m(in_nm: Option<(f64, f64)>, in_m: Option<(f64, f64)>) -> Option<DVec2
 }
 
 impl VesselSpec {
-    /// Start position `(east, north)` in metres (`start_nm` or `start_m`).
+    /// Start position `(east, north)` in metres (`start_nm`, `start_m`, or
+    /// `start_lat_lon` as projected by validation).
     #[must_use]
     pub fn start_position_m(&self) -> DVec2 {
-        either_m(self.start_nm, self.start_m).unwrap_or(DVec2::NAN)
+        either_m(self.start_nm, self.start_m)
+            .or(self.projected.start_m)
+            .unwrap_or(DVec2::NAN)
     }
 
     /// Goal `(east, north)` in metres, if it has one.
     #[must_use]
     pub fn goal_position_m(&self) -> Option<DVec2> {
-        either_m(self.goal_nm, self.goal_m)
+        either_m(self.goal_nm, self.goal_m).or(self.projected.goal_m)
     }
 
     /// Course in radians, clockwise from north.

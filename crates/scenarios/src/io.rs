@@ -156,6 +156,7 @@ mod tests {
                 width_nm: 0.75,
             }],
             seed: Some(u64::MAX),
+            start_time: None,
             source: "everything".into(),
         }
     }

@@ -14,6 +14,7 @@
 //! | [`scenario`] | [`Scenario`], [`VesselSpec`], [`Behaviour`], [`SimulationSettings`], [`Lane`] |
 //! | [`planner_settings`] | [`PlannerSettings`]: the `planner` section, mapped onto [`vorrt_planner::PlannerConfig`] |
 //! | [`validate`] | [`Scenario::validate`], [`Scenario::planner_config`] and the format's limits ([`MAX_TARGETS`]) |
+//! | [`geo`] | geographic scenarios: [`LocalFrame`] (latitude/longitude to the local frame), coordinate and start-time checks |
 //! | [`convert`] | [`Scenario::planning_problem`] and the other conversions to SI |
 //! | [`io`] | [`Scenario::from_ron_str`], [`Scenario::load`], [`Scenario::to_ron_string`], [`load_dir`] |
 //! | [`simulation`] | [`simulate`]: the closed loop — ownship follows its plan and replans when it stops being valid; every trajectory recorded |
@@ -48,6 +49,7 @@ pub mod convert;
 pub mod error;
 pub mod evaluation;
 pub mod generator;
+pub mod geo;
 pub mod io;
 pub mod planner_settings;
 pub mod scenario;
@@ -61,6 +63,7 @@ pub use generator::{
     EncounterMix, GeneratorError, GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection,
     TssSpec,
 };
+pub use geo::{LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions};
 pub use io::{SCENARIO_EXTENSION, bundled_fixtures_dir, load_dir};
 pub use planner_settings::PlannerSettings;
 pub use scenario::{

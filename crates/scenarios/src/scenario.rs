@@ -3,6 +3,7 @@
 //! Field names carry their units (`_nm`, `_m`, `_kn`, `_deg`, `_s`); positions
 //! are `(east, north)` tuples. See `docs/scenario-format.md` for the format.
 
+use crate::geo::ProjectedPositions;
 use crate::planner_settings::PlannerSettings;
 use serde::{Deserialize, Serialize};
 
@@ -38,6 +39,11 @@ pub struct Scenario {
     /// The planner seed to use when none is given elsewhere.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
+    /// The wall-clock time of simulation time 0, ISO 8601 in UTC
+    /// (`"2024-05-01T12:00:00Z"`); timestamps exported trajectories. See
+    /// [`Scenario::start_time_utc`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_time: Option<String>,
     /// Where the scenario came from: the file path given to
     /// [`Scenario::load`] or the source name given to
     /// [`Scenario::from_ron_str`]; used in error messages. Not part of the
@@ -58,6 +64,7 @@ impl PartialEq for Scenario {
             simulation,
             lanes,
             seed,
+            start_time,
             source: _,
         } = self;
         *name == other.name
@@ -68,6 +75,7 @@ impl PartialEq for Scenario {
             && *simulation == other.simulation
             && *lanes == other.lanes
             && *seed == other.seed
+            && *start_time == other.start_time
     }
 }
 
@@ -75,6 +83,8 @@ impl PartialEq for Scenario {
 ///
 /// Exactly one of `start_nm` / `start_m` must be given, and at most one of
 /// `goal_nm` / `goal_m` (ownship needs one). Positions are `(east, north)`.
+/// In a geographic scenario (see [`crate::geo`]) every vessel gives
+/// `start_lat_lon` (and `goal_lat_lon`) instead.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename = "Vessel")]
 pub struct VesselSpec {
@@ -103,6 +113,20 @@ pub struct VesselSpec {
     /// How a target moves. Ignored for ownship (which the planner steers).
     #[serde(default, skip_serializing_if = "Behaviour::is_default")]
     pub behaviour: Behaviour,
+    /// Start position `(latitude, longitude)`, degrees WGS84 (geographic
+    /// scenarios only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_lat_lon: Option<(f64, f64)>,
+    /// Goal `(latitude, longitude)`, degrees WGS84 (geographic scenarios only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goal_lat_lon: Option<(f64, f64)>,
+    /// The vessel's MMSI (AIS identity), when known.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mmsi: Option<u32>,
+    /// `start_lat_lon` and `goal_lat_lon` in the scenario's local frame:
+    /// derived by [`Scenario::validate`], not part of the file.
+    #[serde(skip)]
+    pub projected: ProjectedPositions,
 }
 
 impl VesselSpec {
@@ -126,6 +150,10 @@ impl VesselSpec {
             goal_nm: None,
             goal_m: None,
             behaviour: Behaviour::default(),
+            start_lat_lon: None,
+            goal_lat_lon: None,
+            mmsi: None,
+            projected: ProjectedPositions::default(),
         }
     }
 

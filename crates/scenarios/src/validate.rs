@@ -53,6 +53,7 @@ impl Scenario {
         if self.name.trim().is_empty() {
             return Err(invalid("name".into(), "must not be empty".into()));
         }
+        self.check_geographic().map_err(|(f, p)| invalid(f, p))?;
         check_vessel(&mut self.ownship, Who::Ownship).map_err(|(f, p)| invalid(f, p))?;
         if self.targets.len() > MAX_TARGETS {
             return Err(invalid(
@@ -141,8 +142,10 @@ impl Scenario {
             if range < config.clearance_m {
                 let field = if target.start_nm.is_some() {
                     "start_nm"
-                } else {
+                } else if target.start_m.is_some() {
                     "start_m"
+                } else {
+                    "start_lat_lon"
                 };
                 return Err((
                     Who::Target(index, &target.name).field(field),
@@ -234,7 +237,7 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
                 "and start_m are both given: give exactly one of them".into(),
             ));
         }
-        (None, None) => {
+        (None, None) if vessel.start_lat_lon.is_none() => {
             return Err((
                 who.field("start_nm"),
                 "is missing: give exactly one of start_nm and start_m".into(),
@@ -304,14 +307,16 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
     let Some(goal) = ownship.goal_position_m() else {
         return Err((
             who.field("goal_nm"),
-            "is missing: ownship needs a goal (goal_nm or goal_m)".into(),
+            "is missing: ownship needs a goal (goal_nm or goal_m; goal_lat_lon in a geographic scenario)".into(),
         ));
     };
     if goal == ownship.start_position_m() {
         let field = if ownship.goal_nm.is_some() {
             "goal_nm"
-        } else {
+        } else if ownship.goal_m.is_some() {
             "goal_m"
+        } else {
+            "goal_lat_lon"
         };
         return Err((
             who.field(field),

@@ -118,6 +118,10 @@ impl Gen {
             goal_nm: self.maybe_pair(70, -5.0, 5.0),
             goal_m: self.maybe_pair(10, -9000.0, 9000.0),
             behaviour: self.behaviour(),
+            start_lat_lon: None,
+            goal_lat_lon: None,
+            mmsi: None,
+            projected: Default::default(),
         }
     }
 
@@ -197,6 +201,7 @@ impl Gen {
             },
             lanes,
             seed: Some(self.0.next_u64()),
+            start_time: None,
             source: "generated.ron".into(),
         }
     }

@@ -300,6 +300,7 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
         simulation: Default::default(),
         lanes: Vec::new(),
         seed: Some(run_seed(seed, index)),
+        start_time: None,
         source: format!("<generated open-sea seed {seed} index {index}>"),
     };
     scenario.validate()?;

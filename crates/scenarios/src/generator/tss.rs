@@ -245,6 +245,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         simulation: Default::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
         seed: Some(run_seed(seed, index)),
+        start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
     };
     scenario.validate()?;

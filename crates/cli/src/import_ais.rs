@@ -1,0 +1,129 @@
+//! `vorrt import-ais`: an AIS log into a geographic scenario file (the
+//! reading and the state estimates are `vorrt-ais`'s; this is the file I/O
+//! and the messages).
+
+use crate::commands::{CliError, ExitStatus};
+use clap::Args;
+use std::path::PathBuf;
+use vorrt_ais::{DEFAULT_RANGE_NM, ImportOptions, LineCounts, build_scenario, read_log};
+
+/// `vorrt import-ais`.
+#[derive(Debug, Clone, Args)]
+pub struct ImportAisArgs {
+    /// The AIS log: NMEA 0183 !AIVDM/!AIVDO sentences, optionally behind
+    /// NMEA 4.0 tag blocks (\c:UNIXTIME,...*hh\) that give the times.
+    pub log: PathBuf,
+    /// Ownship's MMSI.
+    #[arg(long, value_name = "MMSI")]
+    pub ownship: u32,
+    /// Ownship's goal, degrees: LAT,LON (e.g. 50.3,-0.8).
+    #[arg(long, value_name = "LAT,LON", allow_hyphen_values = true)]
+    pub goal: String,
+    /// The scenario file to write (RON).
+    #[arg(long, value_name = "SCENARIO.ron")]
+    pub out: PathBuf,
+    /// The time of the scenario's start: ISO 8601 UTC (2024-05-01T12:00:00Z)
+    /// or UNIX seconds [default: the log's last tag-block time].
+    #[arg(long, value_name = "TIME")]
+    pub at: Option<String>,
+    /// Leave out vessels farther than this from ownship, nautical miles.
+    #[arg(long, value_name = "R", default_value_t = DEFAULT_RANGE_NM)]
+    pub range_nm: f64,
+}
+
+fn parse_goal(text: &str) -> Result<(f64, f64), CliError> {
+    let bad = || {
+        CliError::BadInput(format!(
+            "--goal is {text:?}, expected LAT,LON in degrees (e.g. 50.3,-0.8)"
+        ))
+    };
+    let (lat, lon) = text.split_once(',').ok_or_else(bad)?;
+    Ok((
+        lat.trim().parse().map_err(|_| bad())?,
+        lon.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+fn parse_time(text: &str) -> Result<f64, CliError> {
+    if let Ok(unix_s) = text.parse::<f64>()
+        && unix_s.is_finite()
+    {
+        return Ok(unix_s);
+    }
+    let time = vorrt_scenarios::geo::parse_utc_time(text)
+        .map_err(|problem| CliError::BadInput(format!("--at {problem}")))?;
+    #[allow(clippy::cast_precision_loss)]
+    Ok(time.unix_timestamp_nanos() as f64 / 1e9)
+}
+
+fn describe_counts(counts: &LineCounts) -> String {
+    format!(
+        "{} lines: {} messages used, {} skipped ({} malformed, {} bad checksums, {} of unused types), {} reports without a position, {} fragments left incomplete",
+        counts.lines,
+        counts.messages,
+        counts.skipped(),
+        counts.malformed,
+        counts.bad_checksum,
+        counts.unsupported_type,
+        counts.no_position,
+        counts.fragments
+    )
+}
+
+/// Runs `vorrt import-ais`.
+///
+/// # Errors
+/// [`CliError::BadInput`] when the log cannot be read, an option is wrong,
+/// ownship is not in the log or has no position; [`CliError::Output`] when
+/// the scenario cannot be written.
+pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> {
+    let goal_lat_lon = parse_goal(&args.goal)?;
+    let at_unix_s = args.at.as_deref().map(parse_time).transpose()?;
+    let bytes = std::fs::read(&args.log).map_err(|error| {
+        CliError::BadInput(format!("cannot read {}: {error}", args.log.display()))
+    })?;
+    let text = String::from_utf8_lossy(&bytes);
+    let log = read_log(&text);
+    eprintln!("{}: {}", args.log.display(), describe_counts(&log.counts));
+    let options = ImportOptions {
+        log_name: args.log.display().to_string(),
+        ownship_mmsi: args.ownship,
+        goal_lat_lon,
+        at_unix_s,
+        range_nm: args.range_nm,
+    };
+    let import =
+        build_scenario(&log, &options).map_err(|error| CliError::BadInput(error.to_string()))?;
+    for note in &import.notes {
+        eprintln!("note: {note}");
+    }
+    let text = import
+        .scenario
+        .to_ron_string()
+        .map_err(|error| CliError::Output(error.to_string()))?;
+    if let Some(parent) = args
+        .out
+        .parent()
+        .filter(|parent| !parent.as_os_str().is_empty())
+    {
+        std::fs::create_dir_all(parent).map_err(|error| {
+            CliError::Output(format!("cannot create {}: {error}", parent.display()))
+        })?;
+    }
+    std::fs::write(&args.out, text).map_err(|error| {
+        CliError::Output(format!("cannot write {}: {error}", args.out.display()))
+    })?;
+    println!(
+        "wrote {}: ownship {:?} and {} targets{}",
+        args.out.display(),
+        import.scenario.ownship.name,
+        import.scenario.targets.len(),
+        import
+            .scenario
+            .start_time
+            .as_deref()
+            .map(|time| format!(" at {time}"))
+            .unwrap_or_default()
+    );
+    Ok(ExitStatus::Success)
+}
