@@ -51,6 +51,35 @@ impl Turning {
     }
 }
 
+/// Which COLREGs duties the planner's validity check enforces: all of them,
+/// or, as a graded fallback when no fully compliant path exists, fewer.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Compliance {
+    /// Every rule: the directions of rules 14, 15 and 17 and the manner of
+    /// the action (readily apparent, early, held until past: rules 8, 16).
+    #[default]
+    Full,
+    /// The directions of rules 14, 15 and 17 only: a smaller, later or
+    /// shorter alteration is allowed (a departure from rules 8 and 16).
+    Directions,
+    /// Clearance and velocity obstacles only: a departure from the steering
+    /// rules to avoid immediate danger (rules 2(b), 17(b)).
+    SafetyOnly,
+}
+
+impl Compliance {
+    /// The next, weaker level to fall back to, if any.
+    #[must_use]
+    pub fn relaxed(self) -> Option<Compliance> {
+        match self {
+            Compliance::Full => Some(Compliance::Directions),
+            Compliance::Directions => Some(Compliance::SafetyOnly),
+            Compliance::SafetyOnly => None,
+        }
+    }
+}
+
 /// Every knob of the VORRT planner.
 ///
 /// Defaults are the paper's where it gives one (`d' = 100 m`, `d_th = 200 m`,
@@ -63,8 +92,10 @@ pub struct PlannerConfig {
     /// metres. Paper: 100 m.
     pub step_m: f64,
     /// `d_th`: the clearance every target must keep from ownship along every
-    /// segment and, while an encounter is in force, beyond it. Paper: 200 m in
-    /// open sea, 100 m in a traffic separation scheme.
+    /// segment and, while an encounter is in force, beyond it, measured
+    /// between the hulls (reference points stay `d_th` plus half the sum of
+    /// the lengths apart). Paper: 200 m in open sea, 100 m in a traffic
+    /// separation scheme.
     pub clearance_m: f64,
     /// A node this close to the goal tries a final segment onto it, metres.
     /// Default: `step_m`.
@@ -105,6 +136,8 @@ pub struct PlannerConfig {
     /// rate of turn (the default), in which case the plan is the tree's
     /// branch simplified into legs joined by arcs.
     pub turning: Turning,
+    /// Which COLREGs duties the validity check enforces (default: all).
+    pub compliance: Compliance,
     /// The COLREGs constants: MTD, sectors, stand-on tolerances.
     pub rules: RuleParameters,
 }
@@ -126,6 +159,7 @@ impl Default for PlannerConfig {
             time_budget_s: None,
             nearest_index: NearestIndex::Linear,
             turning: Turning::FromLength,
+            compliance: Compliance::Full,
             rules: RuleParameters::default(),
         }
     }

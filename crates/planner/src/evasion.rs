@@ -12,6 +12,7 @@
 use crate::problem::PlanningProblem;
 use crate::safety::min_distance_over;
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::rules::contact_range_m;
 use vorrt_geometry::angle;
 use vorrt_jfs::{InstantTurn, Leg, MotionModel, Pose};
 
@@ -20,7 +21,9 @@ use vorrt_jfs::{InstantTurn, Leg, MotionModel, Pose};
 pub struct EvasiveManeuver {
     /// The course, radians.
     pub course_rad: f64,
-    /// The smallest distance to any target over the horizon on that course, metres.
+    /// The smallest distance between the hulls of ownship and any target over
+    /// the horizon on that course, metres (reference points less half the sum
+    /// of the lengths, as `d_th` is measured).
     pub min_distance_m: f64,
 }
 
@@ -96,7 +99,8 @@ pub fn evasive_leg<M: MotionModel>(
                             track,
                             piece.elapsed_s,
                             piece.duration_s,
-                        ) - if piece.turning { margin_m } else { 0.0 }
+                        ) - contact_range_m(own.length_m, track.vessel.length_m)
+                            - if piece.turning { margin_m } else { 0.0 }
                     })
                     .fold(f64::INFINITY, f64::min)
             })
@@ -170,7 +174,7 @@ mod tests {
             600.0,
         );
         let evasion = evasive_course(&problem, 600.0, 72, 200.0);
-        assert!(evasion.min_distance_m >= hold);
+        assert!(evasion.min_distance_m >= hold - contact_range_m(50.0, 50.0));
         assert!(evasion.min_distance_m >= 200.0, "{evasion:?}");
         // Asking for more clearance than any course gives: the farthest one.
         let farthest = evasive_course(&problem, 600.0, 72, 1e9);

@@ -35,7 +35,7 @@ pub mod tree;
 pub mod validity;
 pub mod vorrt;
 
-pub use config::{NearestIndex, PlannerConfig, Turning};
+pub use config::{Compliance, NearestIndex, PlannerConfig, Turning};
 pub use error::PlannerError;
 pub use evasion::{EvasiveManeuver, evasive_course, evasive_leg};
 pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};

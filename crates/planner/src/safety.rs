@@ -23,7 +23,7 @@
 //! keeps clear of the vessels it would otherwise stand on for (checks 1 and 3
 //! apply to them; rule 17(c) still forbids a port turn for a port-side vessel).
 
-use crate::config::PlannerConfig;
+use crate::config::{Compliance, PlannerConfig};
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::{
@@ -115,14 +115,24 @@ impl<'a> SafetyChecker<'a> {
         }
     }
 
+    /// The distance between reference points that keeps `d_th` between the
+    /// hulls of ownship and the target on `track`: `d_th` plus their contact
+    /// range (half the sum of the lengths, `vorrt_colregs::rules`), so that
+    /// "d_th kept" can never be hull contact.
+    #[must_use]
+    pub fn required_distance_m(&self, track: &LinearTrack) -> f64 {
+        self.config.clearance_m
+            + vorrt_colregs::rules::contact_range_m(self.ownship.length_m, track.vessel.length_m)
+    }
+
     /// Checks only that every target keeps `d_th` plus `margin_m` from the
     /// move: the check of a chord of a turn, whose course is transient.
     ///
     /// # Errors
     /// [`RejectionCause::Clearance`] when a target comes nearer.
     pub fn check_clearance(&self, candidate: &Move, margin_m: f64) -> Result<(), RejectionCause> {
-        let clearance = self.config.clearance_m + margin_m;
         for track in self.tracks {
+            let clearance = self.required_distance_m(track) + margin_m;
             let during = min_distance_over(
                 candidate.start_m,
                 candidate.velocity_mps,
@@ -148,7 +158,6 @@ impl<'a> SafetyChecker<'a> {
         alterations: &[f64],
     ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
-        let clearance = self.config.clearance_m;
         let end_m = candidate.start_m + candidate.velocity_mps * candidate.duration_s;
         let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
         let to_goal_s = end_m.distance(self.goal_m) / self.ownship.speed_mps;
@@ -168,6 +177,7 @@ impl<'a> SafetyChecker<'a> {
             let target_velocity = track.velocity_at(candidate.start_elapsed_s);
             let range = candidate.start_m.distance(target_position);
             let latch = latches.get(index).copied().flatten();
+            let clearance = self.required_distance_m(track);
             if latch.is_none() && range >= rules.mtd_m {
                 // Beyond MTD with no encounter, only the segment's clearance
                 // applies, and it cannot fail while the two could not close
@@ -215,7 +225,9 @@ impl<'a> SafetyChecker<'a> {
                     return Err(RejectionCause::ClearanceAhead);
                 }
             }
-            if let Some(latch) = latch {
+            if let Some(latch) = latch
+                && self.config.compliance != Compliance::SafetyOnly
+            {
                 let altered = alterations.get(index).copied().unwrap_or(0.0);
                 check_motion(
                     &latch,
@@ -227,17 +239,19 @@ impl<'a> SafetyChecker<'a> {
                     altered,
                 )
                 .map_err(RejectionCause::Colregs)?;
-                check_alteration(&latch, altered, candidate.course_rad, rules)
+                if self.config.compliance == Compliance::Full {
+                    check_alteration(&latch, altered, candidate.course_rad, rules)
+                        .map_err(RejectionCause::Colregs)?;
+                    check_action(
+                        &latch,
+                        &motion,
+                        target_position,
+                        target_velocity,
+                        rules,
+                        altered,
+                    )
                     .map_err(RejectionCause::Colregs)?;
-                check_action(
-                    &latch,
-                    &motion,
-                    target_position,
-                    target_velocity,
-                    rules,
-                    altered,
-                )
-                .map_err(RejectionCause::Colregs)?;
+                }
             }
         }
         Ok(())

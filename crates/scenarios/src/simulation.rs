@@ -27,8 +27,8 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::{InstantTurn, Leg, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
-    Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, check_legs,
-    evasive_leg,
+    Compliance, Plan, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint,
+    check_legs, evasive_leg,
 };
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
@@ -88,6 +88,22 @@ pub struct PlanEvent {
     /// On failure, the evasive course ownship turned to, degrees (`None` when
     /// it kept its previous plan, still safe).
     pub evasive_course_deg: Option<f64>,
+    /// The COLREGs duties the plan that came back keeps: `full`, or a graded
+    /// fallback (`directions`: a departure from rules 8 and 16; `safety_only`:
+    /// from the steering rules, rules 2(b) and 17(b)). An evasive manoeuvre
+    /// (failure) is `safety_only` too.
+    #[serde(default)]
+    pub compliance: Compliance,
+}
+
+impl PlanEvent {
+    /// Whether ownship departed from the rules after this call (a fallback
+    /// plan or the evasive manoeuvre), as rules 2(b) and 17(b) allow to avoid
+    /// immediate danger.
+    #[must_use]
+    pub fn departs_from_rules(&self) -> bool {
+        self.compliance != Compliance::Full
+    }
 }
 
 /// A replanning trigger after which the plan in force passed the planner's
@@ -165,6 +181,16 @@ impl SimulationRecord {
     #[must_use]
     pub fn replans(&self) -> usize {
         self.plans.len().saturating_sub(1)
+    }
+
+    /// Planner calls after which ownship departed from the rules (a graded
+    /// fallback plan or the evasive manoeuvre).
+    #[must_use]
+    pub fn rule_departures(&self) -> usize {
+        self.plans
+            .iter()
+            .filter(|event| event.departs_from_rules())
+            .count()
     }
 
     /// Planner calls that failed.
@@ -398,6 +424,9 @@ struct ActivePlan {
     predicted: Vec<TargetState>,
     /// Per target, every encounter the plan expects to have with it.
     anticipated: Vec<Vec<EncounterLatch>>,
+    /// Whether this is the evasive manoeuvre (judged against nothing; only
+    /// the retry timer ends it).
+    evasive: bool,
 }
 
 /// Runs `scenario` in closed loop with planner seed `seed`.
@@ -426,11 +455,24 @@ pub fn simulate_with(
     config: &PlannerConfig,
     seed: u64,
 ) -> Result<SimulationRecord, ScenarioError> {
-    let mut planner = Planner::new(*config).map_err(|error| ScenarioError::Invalid {
+    let invalid = |error: vorrt_planner::PlannerError| ScenarioError::Invalid {
         file: scenario.source.clone(),
         field: "planner".into(),
         problem: error.to_string(),
-    })?;
+    };
+    // One planner per level of the graded fallback, from all the rules down.
+    let mut planners = Vec::new();
+    let mut level = Some(config.compliance);
+    while let Some(compliance) = level {
+        planners.push(
+            Planner::new(PlannerConfig {
+                compliance,
+                ..*config
+            })
+            .map_err(invalid)?,
+        );
+        level = compliance.relaxed();
+    }
     let settings = scenario.simulation;
     let dt = settings.time_step_s;
     let max_duration_s = scenario.max_duration_s();
@@ -556,7 +598,7 @@ pub fn simulate_with(
                 });
             } else {
                 plan_now(
-                    &mut planner,
+                    &mut planners,
                     &problem,
                     &model,
                     PlanCall {
@@ -594,11 +636,12 @@ struct PlanCall {
     clearance_m: f64,
 }
 
-/// Calls the planner on `problem` and puts what comes of it in force: the
-/// new plan, or on failure the previous plan if the planner's validity check
-/// still accepts it, or else the evasive leg (sailed with `model`).
+/// Calls the planners on `problem`, from all the rules down the graded
+/// fallback, and puts what comes of it in force: the first plan found, or on
+/// failure the previous plan if the planner's validity check still accepts
+/// it, or else the evasive leg (sailed with `model`).
 fn plan_now(
-    planner: &mut Planner,
+    planners: &mut [Planner],
     problem: &PlanningProblem,
     model: &OwnshipModel,
     call: PlanCall,
@@ -608,75 +651,107 @@ fn plan_now(
 ) {
     let time_s = problem.start_time_s;
     let started = Instant::now();
-    match planner.plan(problem, call.seed) {
-        Ok(plan) => {
-            *retry_at_s = f64::INFINITY;
-            plans.push(PlanEvent {
-                time_s,
-                trigger: call.why,
-                seed: call.seed,
-                succeeded: true,
-                error: None,
-                statistics: plan.statistics,
-                waypoints: plan.waypoints.clone(),
-                evasive_course_deg: None,
-            });
-            let anticipated = plan.anticipated_encounters();
-            *active = Some(ActivePlan {
-                plan,
-                predicted_at_s: time_s,
-                predicted: problem.targets.clone(),
-                anticipated,
-            });
+    let mut first_error = None;
+    let mut spent = PlanStatistics::default();
+    for planner in planners.iter_mut() {
+        let compliance = planner.config().compliance;
+        match planner.plan(problem, call.seed) {
+            Ok(plan) => {
+                *retry_at_s = if compliance == Compliance::Full {
+                    f64::INFINITY
+                } else {
+                    // A fallback plan is sailed until a compliant one exists.
+                    time_s + RETRY_AFTER_S
+                };
+                let mut statistics = plan.statistics;
+                statistics.elapsed_s += spent.elapsed_s;
+                plans.push(PlanEvent {
+                    time_s,
+                    trigger: call.why,
+                    seed: call.seed,
+                    succeeded: true,
+                    error: first_error.map(|error: vorrt_planner::PlannerError| error.to_string()),
+                    statistics,
+                    waypoints: plan.waypoints.clone(),
+                    evasive_course_deg: None,
+                    compliance,
+                });
+                let anticipated = plan.anticipated_encounters();
+                *active = Some(ActivePlan {
+                    plan,
+                    predicted_at_s: time_s,
+                    predicted: problem.targets.clone(),
+                    anticipated,
+                    evasive: false,
+                });
+                return;
+            }
+            Err(error) => {
+                if let vorrt_planner::PlannerError::NoSafePath { statistics }
+                | vorrt_planner::PlannerError::BudgetExhausted { statistics, .. } = &error
+                {
+                    spent.elapsed_s += statistics.elapsed_s;
+                    if first_error.is_none() {
+                        let elapsed_s = spent.elapsed_s;
+                        spent = **statistics;
+                        spent.elapsed_s = elapsed_s;
+                    }
+                }
+                if first_error.is_none() {
+                    first_error = Some(error);
+                }
+            }
         }
-        Err(error) => {
-            *retry_at_s = time_s + RETRY_AFTER_S;
-            let statistics = match &error {
-                vorrt_planner::PlannerError::NoSafePath { statistics }
-                | vorrt_planner::PlannerError::BudgetExhausted { statistics, .. } => **statistics,
-                _ => PlanStatistics {
-                    elapsed_s: started.elapsed().as_secs_f64(),
-                    ..PlanStatistics::default()
-                },
-            };
-            let keep_plan = active.as_ref().is_some_and(|active| {
+    }
+    *retry_at_s = time_s + RETRY_AFTER_S;
+    if spent.elapsed_s == 0.0 {
+        spent.elapsed_s = started.elapsed().as_secs_f64();
+    }
+    let keep_plan = active.as_ref().is_some_and(|active| {
+        !active.evasive
+            && planners.first().is_some_and(|planner| {
                 check_legs(
                     planner.config(),
                     problem,
                     &remaining_legs(&active.plan, time_s),
                 )
                 .is_ok()
-            });
-            let evasive_course_deg = if keep_plan {
-                None
-            } else {
-                let (leg, evasion) = evasive_leg(
-                    problem,
-                    EVASION_HORIZON_S,
-                    EVASION_COURSES,
-                    call.clearance_m,
-                    model,
-                );
-                *active = Some(ActivePlan {
-                    plan: leg_plan(leg, time_s),
-                    predicted_at_s: time_s,
-                    predicted: problem.targets.clone(),
-                    anticipated: vec![Vec::new(); problem.targets.len()],
-                });
-                Some(evasion.course_rad.to_degrees())
-            };
-            plans.push(PlanEvent {
-                time_s,
-                trigger: call.why,
-                seed: call.seed,
-                succeeded: false,
-                error: Some(error.to_string()),
-                statistics,
-                waypoints: Vec::new(),
-                evasive_course_deg,
-            });
-        }
-    }
+            })
+    });
+    let evasive_course_deg = if keep_plan {
+        None
+    } else {
+        let (leg, evasion) = evasive_leg(
+            problem,
+            EVASION_HORIZON_S,
+            EVASION_COURSES,
+            call.clearance_m,
+            model,
+        );
+        *active = Some(ActivePlan {
+            plan: leg_plan(leg, time_s),
+            predicted_at_s: time_s,
+            predicted: problem.targets.clone(),
+            anticipated: vec![Vec::new(); problem.targets.len()],
+            evasive: true,
+        });
+        Some(evasion.course_rad.to_degrees())
+    };
+    plans.push(PlanEvent {
+        time_s,
+        trigger: call.why,
+        seed: call.seed,
+        succeeded: false,
+        error: first_error.map(|error| error.to_string()),
+        statistics: spent,
+        waypoints: Vec::new(),
+        evasive_course_deg,
+        compliance: if keep_plan {
+            Compliance::Full
+        } else {
+            Compliance::SafetyOnly
+        },
+    });
 }
 
 /// A plan of one leg starting at `time_s` (the evasive manoeuvre).
@@ -742,7 +817,7 @@ fn replan_trigger(
     time_s: f64,
     deviation_m: f64,
 ) -> Option<PlanTrigger> {
-    let active = active?;
+    let active = active.filter(|active| !active.evasive)?;
     let elapsed_s = time_s - active.predicted_at_s;
     for (index, (target, predicted)) in targets.iter().zip(&active.predicted).enumerate() {
         let expected = predicted.predict(elapsed_s).vessel.position_m;
