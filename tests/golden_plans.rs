@@ -87,6 +87,7 @@ fn error_kind(error: &PlannerError) -> String {
         PlannerError::InvalidRules(_) => "InvalidRules",
         PlannerError::InvalidProblem { .. } => "InvalidProblem",
         PlannerError::NoSafePath { .. } => "NoSafePath",
+        PlannerError::NodeBudgetTooSmall { .. } => "NodeBudgetTooSmall",
         PlannerError::BudgetExhausted { .. } => "BudgetExhausted",
     }
     .to_owned()

@@ -4,7 +4,7 @@
 //! placeholders like `<scenario name>` are not HTML.
 #![allow(rustdoc::invalid_html_tags)]
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
 const EXIT_CODES: &str = "\
@@ -19,15 +19,15 @@ Exit codes:
 /// and evaluate encounters at sea under the collision regulations.
 #[derive(Debug, Parser)]
 #[command(name = "vorrt", version, about, after_help = EXIT_CODES)]
-pub struct Cli {
+pub(crate) struct Cli {
     /// What to do.
     #[command(subcommand)]
-    pub command: Command,
+    pub(crate) command: Command,
 }
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {
+pub(crate) enum Command {
     /// Run a scenario in closed loop and report on it.
     ///
     /// Ownship plans, follows its plan and replans when a target strays from
@@ -107,11 +107,11 @@ pub enum Command {
     /// and DIR/failures/*.ron. Exits 0 once the batch has run, whatever its
     /// results. See docs/evaluation.md.
     #[command(after_help = EXIT_CODES)]
-    Batch(crate::batch::BatchArgs),
+    Batch(BatchArgs),
     /// Write generated scenarios as .ron files (the ones `batch --generate`
     /// would run with the same options).
     #[command(after_help = EXIT_CODES)]
-    Generate(crate::batch::GenerateArgs),
+    Generate(GenerateArgs),
     /// Turn an AIS log (NMEA 0183) into a geographic scenario file.
     ///
     /// Reads !AIVDM/!AIVDO message types 1, 2, 3, 5, 18, 19 and 24 (multi-
@@ -122,15 +122,140 @@ pub enum Command {
     /// docs/real-data.md.
     #[command(after_help = EXIT_CODES)]
     ImportAis(crate::import_ais::ImportAisArgs),
-    /// Merge the outputs of several batch shards into one rows.csv,
-    /// summary.json and plots.
+    /// Merge the outputs of the shards of one batch into one rows.csv,
+    /// summary.json, run.json and plots; refuses shards of different
+    /// batches and warns about missing shards.
     #[command(after_help = EXIT_CODES)]
-    Merge(crate::batch::MergeArgs),
+    Merge(MergeArgs),
+}
+
+/// Which generator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum Kind {
+    /// Open-sea encounters: targets on near-collision courses (see
+    /// docs/evaluation.md).
+    OpenSea,
+    /// Crossings of a traffic separation scheme.
+    Tss,
+}
+
+/// How the generated targets move.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum BehaviourName {
+    /// Straight for their goals at constant speed (the paper's).
+    Constant,
+    /// Give way to ownship by COLREGs when they must (35° to starboard).
+    Colregs,
+    /// Course and speed wander about the nominal (5°, 0.5 kn).
+    Noisy,
+    /// Turn 30-90° to a random side, unannounced, before the closest approach.
+    SuddenTurn,
+}
+
+/// Lane layout of a generated TSS.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum DirectionName {
+    /// One lane, traffic flowing west.
+    Westbound,
+    /// One lane, traffic flowing east.
+    Eastbound,
+    /// Two lanes with a separation zone.
+    TwoWay,
+}
+
+/// The generator options shared by `batch --generate` and `generate`.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct GeneratorArgs {
+    /// Open sea: number of targets per scenario (1-64).
+    #[arg(long, value_name = "N")]
+    pub(crate) targets: Option<usize>,
+    /// TSS: traffic density, targets per nautical mile of lane [default: 1].
+    #[arg(long, value_name = "PER_NM")]
+    pub(crate) density: Option<f64>,
+    /// TSS: lane layout.
+    #[arg(long, value_enum, default_value = "westbound")]
+    pub(crate) direction: DirectionName,
+    /// TSS: lane width, nautical miles.
+    #[arg(long, value_name = "NM", default_value_t = 1.0)]
+    pub(crate) lane_width: f64,
+    /// Number of scenarios in the whole batch (before sharding).
+    #[arg(long, value_name = "K", default_value_t = 100,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    pub(crate) count: u64,
+    /// Batch seed: scenario k is drawn from stream k of this seed and
+    /// simulated with a seed derived from (seed, k).
+    #[arg(long, value_name = "S", default_value_t = 1)]
+    pub(crate) seed: u64,
+    /// How the targets move.
+    #[arg(long, value_enum, default_value = "constant")]
+    pub(crate) behaviour: BehaviourName,
+    /// Only the scenarios k with k % n == i (e.g. --shard
+    /// $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT).
+    #[arg(long, value_name = "i/n")]
+    pub(crate) shard: Option<String>,
+}
+
+/// `vorrt batch`.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct BatchArgs {
+    /// Generate the scenarios.
+    #[arg(
+        long,
+        value_enum,
+        value_name = "KIND",
+        conflicts_with = "dir",
+        required_unless_present = "dir"
+    )]
+    pub(crate) generate: Option<Kind>,
+    /// Run the scenario files (*.ron) of this folder instead, in file-name
+    /// order; each with its own `seed` if it has one.
+    #[arg(long, value_name = "FOLDER")]
+    pub(crate) dir: Option<PathBuf>,
+    /// The generator, seed and shard options.
+    #[command(flatten)]
+    pub(crate) generator: GeneratorArgs,
+    /// Worker threads, at least 1 [default: one per core].
+    #[arg(long, value_name = "N",
+          value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..))]
+    pub(crate) jobs: Option<usize>,
+    /// Output folder.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) out: PathBuf,
+    /// Also write every run's trajectory.csv, into
+    /// `DIR/runs/<index>-<scenario name>/`.
+    #[arg(long)]
+    pub(crate) trajectories: bool,
+}
+
+/// `vorrt generate`.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct GenerateArgs {
+    /// Which generator.
+    #[arg(value_enum)]
+    pub(crate) kind: Kind,
+    /// The generator, seed and shard options.
+    #[command(flatten)]
+    pub(crate) generator: GeneratorArgs,
+    /// Output folder for the .ron files.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) out: PathBuf,
+}
+
+/// `vorrt merge`.
+#[derive(Debug, Clone, Args)]
+pub(crate) struct MergeArgs {
+    /// Shard output folders of `vorrt batch` (each holding rows.csv and
+    /// run.json); they must be shards of one batch.
+    #[arg(required = true, value_name = "DIR")]
+    pub(crate) inputs: Vec<PathBuf>,
+    /// Output folder.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) out: PathBuf,
 }
 
 /// What `vorrt plan` prints.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum PlanFormat {
+pub(crate) enum PlanFormat {
     /// The plan schema of docs/report-format.md.
     Json,
     /// A GeoJSON Feature with the plan's LineString (geographic scenarios).

@@ -1,25 +1,28 @@
 //! `vorrt demo`: every bundled scenario run in parallel, each written as
 //! `simulate` writes it, and an `index.html` showing them all.
 
-use crate::commands::{CliError, ExitStatus, folder_name, run_scenario, seed_for, write_outputs};
+use crate::console;
+use crate::error::{CliError, ExitStatus};
+use crate::fixtures::BUNDLED;
 use crate::report::Report;
+use crate::run::{folder_name, run_scenario, seed_for, write_outputs};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use vorrt_scenarios::{Scenario, bundled_fixtures_dir, load_dir};
+use vorrt_scenarios::{Scenario, load_dir};
 
 /// The options of `vorrt demo`.
 #[derive(Debug, Clone, Default)]
-pub struct DemoOptions {
+pub(crate) struct DemoOptions {
     /// Output folder.
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// Seed for every scenario (else each scenario's own, else 1).
-    pub seed: Option<u64>,
+    pub(crate) seed: Option<u64>,
     /// Scenario folder (else the bundled fixtures).
-    pub fixtures: Option<PathBuf>,
+    pub(crate) fixtures: Option<PathBuf>,
     /// Names or file stems to run (all when empty).
-    pub only: Vec<String>,
+    pub(crate) only: Vec<String>,
 }
 
 /// One scenario to run.
@@ -49,18 +52,6 @@ struct Outcome {
     wall_time_s: f64,
 }
 
-/// The bundled fixtures folder: next to the workspace's sources when built
-/// from them, else `fixtures/` in the current folder.
-#[must_use]
-pub fn default_fixtures_dir() -> PathBuf {
-    let bundled = bundled_fixtures_dir();
-    if bundled.is_dir() {
-        bundled
-    } else {
-        PathBuf::from("fixtures")
-    }
-}
-
 fn group_name(dir: &Path) -> String {
     dir.file_name().map_or_else(
         || "scenarios".to_owned(),
@@ -83,24 +74,18 @@ fn load_group(dir: &Path, group: &str) -> Result<Vec<Entry>, CliError> {
         .collect())
 }
 
-/// The groups of the bundled fixtures that `demo` runs by default; other
-/// folders there (golden results and the like) hold no scenarios.
-pub const BUNDLED_GROUPS: [&str; 3] = ["paper", "imazu", "geo"];
-
-/// The bundled scenarios: [`BUNDLED_GROUPS`] of `dir`.
-fn collect_bundled(dir: &Path) -> Result<Vec<Entry>, CliError> {
-    let mut entries = Vec::new();
-    for group in BUNDLED_GROUPS {
-        let subdir = dir.join(group);
-        if !subdir.is_dir() {
-            return Err(CliError::BadInput(format!(
-                "bundled scenario folder {} does not exist (give one with --fixtures DIR)",
-                subdir.display()
-            )));
-        }
-        entries.extend(load_group(&subdir, group)?);
-    }
-    Ok(entries)
+/// The bundled scenarios, from the copies embedded in the binary.
+fn collect_bundled() -> Result<Vec<Entry>, CliError> {
+    BUNDLED
+        .iter()
+        .map(|fixture| {
+            Ok(Entry {
+                group: fixture.group.to_owned(),
+                stem: folder_name(fixture.stem()),
+                scenario: fixture.load()?,
+            })
+        })
+        .collect()
 }
 
 /// The scenarios of `dir`: its own `*.ron` files, then those of each
@@ -132,14 +117,13 @@ fn collect(dir: &Path) -> Result<Vec<Entry>, CliError> {
 /// [`CliError::BadInput`] when the scenario folder is missing or holds an
 /// invalid file, or `--only` matches nothing; [`CliError::Output`] when the
 /// page cannot be written.
-pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
+pub(crate) fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
     let (fixtures, mut entries) = match &options.fixtures {
-        Some(dir) => (dir.clone(), collect(dir)?),
-        None => {
-            let dir = default_fixtures_dir();
-            let entries = collect_bundled(&dir)?;
-            (std::fs::canonicalize(&dir).unwrap_or(dir), entries)
-        }
+        Some(dir) => (dir.display().to_string(), collect(dir)?),
+        None => (
+            "the bundled fixtures (paper, imazu, geo)".to_owned(),
+            collect_bundled()?,
+        ),
     };
     if !options.only.is_empty() {
         let known: Vec<String> = entries.iter().map(|entry| entry.stem.clone()).collect();
@@ -153,7 +137,7 @@ pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
             return Err(CliError::BadInput(format!(
                 "--only {} matches no scenario in {}; there are: {}",
                 options.only.join(", "),
-                fixtures.display(),
+                fixtures,
                 known.join(", ")
             )));
         }
@@ -161,18 +145,18 @@ pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
     if entries.is_empty() {
         return Err(CliError::BadInput(format!(
             "no scenario files (*.ron) in {} or its subfolders",
-            fixtures.display()
+            fixtures
         )));
     }
     std::fs::create_dir_all(&options.out).map_err(|error| {
         CliError::Output(format!("cannot create {}: {error}", options.out.display()))
     })?;
-    println!(
+    console::line(&format!(
         "running {} scenarios from {} into {}",
         entries.len(),
-        fixtures.display(),
+        fixtures,
         options.out.display()
-    );
+    ));
     let started = Instant::now();
     let outcomes: Vec<Outcome> = entries
         .into_par_iter()
@@ -188,7 +172,7 @@ pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
                 result,
                 wall_time_s: clock.elapsed().as_secs_f64(),
             };
-            println!("{}", progress_line(&outcome));
+            console::line(&progress_line(&outcome));
             outcome
         })
         .collect();
@@ -204,12 +188,12 @@ pub fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
         .iter()
         .filter(|outcome| outcome.result.is_err())
         .count();
-    println!(
+    console::line(&format!(
         "{safe} of {} runs reached their goal safely ({:.1} s); open {}",
         outcomes.len(),
         started.elapsed().as_secs_f64(),
         index.display()
-    );
+    ));
     Ok(if failed > 0 {
         ExitStatus::BadInput
     } else if safe < outcomes.len() {
@@ -247,7 +231,7 @@ fn progress_line(outcome: &Outcome) -> String {
 
 /// Escapes text for HTML.
 #[must_use]
-pub fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     let mut escaped = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
@@ -296,7 +280,7 @@ figcaption { font-size: 0.85em; color: #555; }
 ul.violations { margin: 0; padding-left: 1.2em; }
 ";
 
-fn index_html(outcomes: &[Outcome], fixtures: &Path) -> String {
+fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
     let mut html = String::new();
     let safe = outcomes
         .iter()
@@ -317,7 +301,7 @@ fn index_html(outcomes: &[Outcome], fixtures: &Path) -> String {
          plots in nautical miles. Each scenario's <code>report.json</code> is described in \
          <code>docs/report-format.md</code>.</p>\n",
         outcomes.len(),
-        escape(&fixtures.display().to_string()),
+        escape(fixtures),
         outcomes.len()
     );
     html.push_str(

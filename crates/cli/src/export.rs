@@ -4,8 +4,9 @@
 //! with the `csv`, `geojson` and `gpx` crates; described in
 //! `docs/report-format.md`.
 
-use crate::commands::{CliError, Run};
+use crate::error::CliError;
 use crate::report::Report;
+use crate::run::Run;
 use geojson::{Feature, FeatureCollection, Geometry, JsonObject, JsonValue};
 use std::path::Path;
 use time::OffsetDateTime;
@@ -15,14 +16,14 @@ use vorrt_planner::Plan;
 use vorrt_scenarios::{LocalFrame, Scenario, SimulationRecord, VesselSpec};
 
 /// The CSV trajectory, written for every run.
-pub const TRAJECTORY_CSV: &str = "trajectory.csv";
+pub(crate) const TRAJECTORY_CSV: &str = "trajectory.csv";
 /// The GeoJSON trajectory, written for geographic runs.
-pub const TRAJECTORY_GEOJSON: &str = "trajectory.geojson";
+pub(crate) const TRAJECTORY_GEOJSON: &str = "trajectory.geojson";
 /// The GPX trajectory, written for geographic runs.
-pub const TRAJECTORY_GPX: &str = "trajectory.gpx";
+pub(crate) const TRAJECTORY_GPX: &str = "trajectory.gpx";
 
 /// The header of `trajectory.csv` (geographic runs add `lat_deg,lon_deg`).
-pub const CSV_HEADER: [&str; 6] = [
+pub(crate) const CSV_HEADER: [&str; 6] = [
     "time_s",
     "vessel",
     "east_m",
@@ -56,7 +57,10 @@ fn course_deg(state: &VesselState) -> f64 {
 ///
 /// # Errors
 /// [`CliError::Output`] if the CSV writer fails (it writes to memory).
-pub fn trajectory_csv(scenario: &Scenario, record: &SimulationRecord) -> Result<String, CliError> {
+pub(crate) fn trajectory_csv(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+) -> Result<String, CliError> {
     let frame = scenario.local_frame();
     let mut writer = csv::Writer::from_writer(Vec::new());
     let mut header: Vec<&str> = CSV_HEADER.to_vec();
@@ -136,7 +140,7 @@ fn geographic_frame(scenario: &Scenario) -> Result<LocalFrame, CliError> {
 ///
 /// # Errors
 /// [`CliError::BadInput`] for a scenario that is not geographic.
-pub fn trajectory_geojson(scenario: &Scenario, run: &Run) -> Result<String, CliError> {
+pub(crate) fn trajectory_geojson(scenario: &Scenario, run: &Run) -> Result<String, CliError> {
     let frame = geographic_frame(scenario)?;
     let record = &run.record;
     let mut features = Vec::new();
@@ -242,7 +246,10 @@ fn gpx_document() -> gpx::Gpx {
 /// # Errors
 /// [`CliError::BadInput`] for a scenario that is not geographic,
 /// [`CliError::Output`] if the GPX writer fails.
-pub fn trajectory_gpx(scenario: &Scenario, record: &SimulationRecord) -> Result<String, CliError> {
+pub(crate) fn trajectory_gpx(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+) -> Result<String, CliError> {
     let frame = geographic_frame(scenario)?;
     let mut document = gpx_document();
     for (spec, role, states) in vessels(scenario, record) {
@@ -268,7 +275,7 @@ pub fn trajectory_gpx(scenario: &Scenario, record: &SimulationRecord) -> Result<
 ///
 /// # Errors
 /// [`CliError::Output`] when a file cannot be written.
-pub fn write_trajectories(
+pub(crate) fn write_trajectories(
     scenario: &Scenario,
     run: &Run,
     dir: &Path,
@@ -294,7 +301,11 @@ pub fn write_trajectories(
 ///
 /// # Errors
 /// [`CliError::BadInput`] for a scenario that is not geographic.
-pub fn plan_geojson(scenario: &Scenario, seed: u64, plan: &Plan) -> Result<String, CliError> {
+pub(crate) fn plan_geojson(
+    scenario: &Scenario,
+    seed: u64,
+    plan: &Plan,
+) -> Result<String, CliError> {
     let frame = geographic_frame(scenario)?;
     let line = Geometry::new_line_string(
         plan.waypoints
@@ -320,7 +331,7 @@ pub fn plan_geojson(scenario: &Scenario, seed: u64, plan: &Plan) -> Result<Strin
 /// # Errors
 /// [`CliError::BadInput`] for a scenario that is not geographic,
 /// [`CliError::Output`] if the GPX writer fails.
-pub fn plan_gpx(scenario: &Scenario, plan: &Plan) -> Result<String, CliError> {
+pub(crate) fn plan_gpx(scenario: &Scenario, plan: &Plan) -> Result<String, CliError> {
     let frame = geographic_frame(scenario)?;
     let mut document = gpx_document();
     let points = plan

@@ -7,14 +7,14 @@ use plotters::style::{FontStyle, register_font};
 use std::sync::Once;
 
 /// The family name plots use for all text.
-pub const FAMILY: &str = "sans-serif";
+pub(crate) const FAMILY: &str = "sans-serif";
 
 /// The bytes of DejaVu Sans 2.37.
-pub static DEJAVU_SANS: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
+pub(crate) static DEJAVU_SANS: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 
 /// Registers the bundled font for every style of [`FAMILY`] (bold and italic
 /// fall back to the regular face). Idempotent; call before drawing.
-pub fn register() {
+pub(crate) fn register() {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {
         // The bytes are a valid TrueType font, checked by the tests; should

@@ -2,33 +2,34 @@
 //! reading and the state estimates are `vorrt-ais`'s; this is the file I/O
 //! and the messages).
 
-use crate::commands::{CliError, ExitStatus};
+use crate::console;
+use crate::error::{CliError, ExitStatus};
 use clap::Args;
 use std::path::PathBuf;
 use vorrt_ais::{DEFAULT_RANGE_NM, ImportOptions, LineCounts, build_scenario, read_log};
 
 /// `vorrt import-ais`.
 #[derive(Debug, Clone, Args)]
-pub struct ImportAisArgs {
+pub(crate) struct ImportAisArgs {
     /// The AIS log: NMEA 0183 !AIVDM/!AIVDO sentences, optionally behind
     /// NMEA 4.0 tag blocks (\c:UNIXTIME,...*hh\) that give the times.
-    pub log: PathBuf,
+    pub(crate) log: PathBuf,
     /// Ownship's MMSI.
     #[arg(long, value_name = "MMSI")]
-    pub ownship: u32,
+    pub(crate) ownship: u32,
     /// Ownship's goal, degrees: LAT,LON (e.g. 50.3,-0.8).
     #[arg(long, value_name = "LAT,LON", allow_hyphen_values = true)]
-    pub goal: String,
+    pub(crate) goal: String,
     /// The scenario file to write (RON).
     #[arg(long, value_name = "SCENARIO.ron")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
     /// The time of the scenario's start: ISO 8601 UTC (2024-05-01T12:00:00Z)
     /// or UNIX seconds [default: the log's last tag-block time].
     #[arg(long, value_name = "TIME")]
-    pub at: Option<String>,
+    pub(crate) at: Option<String>,
     /// Leave out vessels farther than this from ownship, nautical miles.
     #[arg(long, value_name = "R", default_value_t = DEFAULT_RANGE_NM)]
-    pub range_nm: f64,
+    pub(crate) range_nm: f64,
 }
 
 fn parse_goal(text: &str) -> Result<(f64, f64), CliError> {
@@ -76,7 +77,7 @@ fn describe_counts(counts: &LineCounts) -> String {
 /// [`CliError::BadInput`] when the log cannot be read, an option is wrong,
 /// ownship is not in the log or has no position; [`CliError::Output`] when
 /// the scenario cannot be written.
-pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> {
+pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> {
     let goal_lat_lon = parse_goal(&args.goal)?;
     let at_unix_s = args.at.as_deref().map(parse_time).transpose()?;
     let bytes = std::fs::read(&args.log).map_err(|error| {
@@ -84,7 +85,11 @@ pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> 
     })?;
     let text = String::from_utf8_lossy(&bytes);
     let log = read_log(&text);
-    eprintln!("{}: {}", args.log.display(), describe_counts(&log.counts));
+    console::warn(&format!(
+        "{}: {}",
+        args.log.display(),
+        describe_counts(&log.counts)
+    ));
     let options = ImportOptions {
         log_name: args.log.display().to_string(),
         ownship_mmsi: args.ownship,
@@ -95,7 +100,7 @@ pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> 
     let import =
         build_scenario(&log, &options).map_err(|error| CliError::BadInput(error.to_string()))?;
     for note in &import.notes {
-        eprintln!("note: {note}");
+        console::warn(&format!("note: {note}"));
     }
     let text = import
         .scenario
@@ -113,7 +118,7 @@ pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> 
     std::fs::write(&args.out, text).map_err(|error| {
         CliError::Output(format!("cannot write {}: {error}", args.out.display()))
     })?;
-    println!(
+    console::line(&format!(
         "wrote {}: ownship {:?} and {} targets{}",
         args.out.display(),
         import.scenario.ownship.name,
@@ -124,6 +129,6 @@ pub fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> 
             .as_deref()
             .map(|time| format!(" at {time}"))
             .unwrap_or_default()
-    );
+    ));
     Ok(ExitStatus::Success)
 }

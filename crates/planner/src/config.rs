@@ -111,6 +111,11 @@ pub struct PlannerConfig {
     pub nodes_per_phase: usize,
     /// Samples (accepted or not) per phase before the phase gives up (erratum 4).
     pub samples_per_phase: usize,
+    /// Budgets follow the route: a plan from `start` to `goal` gets at least
+    /// this many accepted nodes per phase for each step `d'` of the straight
+    /// route, and samples in the same proportion (see
+    /// [`PlannerConfig::for_route`]). Default 2.5; 0 turns the scaling off.
+    pub nodes_per_route_step: f64,
     /// How many times the whole tree is grown again from the root after both
     /// phases fail.
     pub max_restarts: usize,
@@ -152,6 +157,7 @@ impl Default for PlannerConfig {
             phase_two_goal_bias: 0.0,
             nodes_per_phase: 200,
             samples_per_phase: 4000,
+            nodes_per_route_step: 2.5,
             max_restarts: 3,
             max_turn_per_step_rad: 30f64.to_radians(),
             sampling_margin_m: 2.0 * 1852.0,
@@ -176,10 +182,52 @@ pub const MAX_SAMPLES_PER_PHASE: usize = 10_000_000;
 /// keeps every distance, time and area the planner computes finite.
 pub const MAX_LENGTH_OR_TIME: f64 = 1e8;
 
+/// The largest `nodes_per_route_step` the planner accepts.
+pub const MAX_NODES_PER_ROUTE_STEP: f64 = 1_000.0;
+
 /// The most restarts the planner accepts as configuration.
 pub const MAX_RESTARTS: usize = 1_000;
 
 impl PlannerConfig {
+    /// The configuration a plan over a straight route of `route_m` metres
+    /// runs with: budgets that follow the route length, so that long routes
+    /// plan with default settings.
+    ///
+    /// `nodes_per_phase` becomes `max(nodes_per_phase, ceil(k × route_m /
+    /// step_m))` with `k = nodes_per_route_step` (a branch to the goal needs
+    /// `route_m / step_m` nodes, and half the samples are random), at most
+    /// [`MAX_NODES_PER_PHASE`]; `samples_per_phase` grows in the same
+    /// proportion, at most [`MAX_SAMPLES_PER_PHASE`]. A short route keeps the
+    /// configured budgets exactly: with the defaults (200 nodes, k = 2.5) any
+    /// route up to 8 km; with the bundled fixtures' 600 nodes, up to 24 km.
+    ///
+    /// ```
+    /// use vorrt_planner::PlannerConfig;
+    /// let config = PlannerConfig::default();
+    /// assert_eq!(config.for_route(5_000.0), config);
+    /// let long = config.for_route(30.0 * 1852.0);
+    /// assert_eq!(long.nodes_per_phase, 1389);
+    /// assert_eq!(long.samples_per_phase, 27_780);
+    /// ```
+    #[must_use]
+    pub fn for_route(&self, route_m: f64) -> PlannerConfig {
+        let needed = (self.nodes_per_route_step * route_m / self.step_m).ceil();
+        // NaN (a non-finite route) keeps the configured budgets.
+        if needed.is_nan() || needed <= self.nodes_per_phase as f64 || self.nodes_per_phase == 0 {
+            return *self;
+        }
+        let nodes = needed.min(MAX_NODES_PER_PHASE as f64) as usize;
+        let scale = nodes as f64 / self.nodes_per_phase as f64;
+        let samples = (self.samples_per_phase as f64 * scale)
+            .ceil()
+            .min(MAX_SAMPLES_PER_PHASE as f64) as usize;
+        PlannerConfig {
+            nodes_per_phase: nodes.max(self.nodes_per_phase),
+            samples_per_phase: samples.max(nodes).max(self.samples_per_phase),
+            ..*self
+        }
+    }
+
     /// Checks every field.
     ///
     /// # Errors
@@ -240,6 +288,13 @@ impl PlannerConfig {
                 "samples_per_phase",
                 self.samples_per_phase as f64,
                 "a whole number from nodes_per_phase to 10000000",
+            );
+        }
+        if !(0.0..=MAX_NODES_PER_ROUTE_STEP).contains(&self.nodes_per_route_step) {
+            return invalid(
+                "nodes_per_route_step",
+                self.nodes_per_route_step,
+                "a number from 0 to 1000",
             );
         }
         if self.max_restarts > MAX_RESTARTS {

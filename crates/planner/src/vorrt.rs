@@ -103,6 +103,21 @@ impl Planner {
     /// [`PlannerError::NoSafePath`] when every restart failed, and
     /// [`PlannerError::BudgetExhausted`] when the time budget ran out.
     pub fn plan(&mut self, problem: &PlanningProblem, seed: u64) -> Result<Plan, PlannerError> {
+        // Budgets follow the route length (`PlannerConfig::for_route`), and a
+        // failure that spent every phase's node quota says so.
+        let configured = self.config;
+        let route_m = problem.ownship.position_m.distance(problem.goal_m);
+        self.config = configured.for_route(route_m);
+        let result = self.plan_within_budgets(problem, seed);
+        let config = std::mem::replace(&mut self.config, configured);
+        result.map_err(|error| error.blame_budget(&config, route_m))
+    }
+
+    fn plan_within_budgets(
+        &mut self,
+        problem: &PlanningProblem,
+        seed: u64,
+    ) -> Result<Plan, PlannerError> {
         problem.validate()?;
         let started = Instant::now();
         let config = self.config;

@@ -241,7 +241,11 @@ proptest! {
         let plan = match planner.plan(problem, seed) {
             Ok(plan) => plan,
             // Allowed here; counted by `success_rate_is_high`.
-            Err(PlannerError::NoSafePath { .. } | PlannerError::BudgetExhausted { .. }) => {
+            Err(
+            PlannerError::NoSafePath { .. }
+            | PlannerError::NodeBudgetTooSmall { .. }
+            | PlannerError::BudgetExhausted { .. },
+        ) => {
                 return Ok(());
             }
             Err(other) => return Err(TestCaseError::fail(other.to_string())),

@@ -170,7 +170,11 @@ fn assert_returns_quickly(planner: &mut Planner, problem: &PlanningProblem, seed
             }
         }
         Err(PlannerError::InvalidProblem { field, .. }) => assert!(!field.is_empty()),
-        Err(PlannerError::NoSafePath { .. } | PlannerError::BudgetExhausted { .. }) => {
+        Err(
+            PlannerError::NoSafePath { .. }
+            | PlannerError::NodeBudgetTooSmall { .. }
+            | PlannerError::BudgetExhausted { .. },
+        ) => {
             assert!(problem.validate().is_ok());
         }
         Err(other) => panic!("unexpected error {other}"),

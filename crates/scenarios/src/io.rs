@@ -4,6 +4,7 @@ use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use ron::extensions::Extensions;
 use ron::ser::PrettyConfig;
+use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
 /// The file extension of scenario files.
@@ -25,15 +26,37 @@ impl Scenario {
     /// [`ScenarioError::Syntax`] when the text is not a scenario (with the
     /// line and column), [`ScenarioError::Invalid`] when a value breaks a rule.
     pub fn from_ron_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
-        let mut scenario: Scenario =
-            options()
-                .from_str(text)
-                .map_err(|error: ron::error::SpannedError| ScenarioError::Syntax {
-                    file: source.to_owned(),
-                    line: error.position.line,
-                    column: error.position.col,
-                    message: error.code.to_string(),
-                })?;
+        let syntax = |error: ron::error::SpannedError, path: Option<String>| {
+            let message = error.code.to_string();
+            ScenarioError::Syntax {
+                file: source.to_owned(),
+                line: error.position.line,
+                column: error.position.col,
+                // A type error deep in the file names its field, e.g.
+                // `targets[1].speed_kn: Expected float`.
+                message: match path.filter(|path| !path.is_empty() && path != ".") {
+                    Some(path) => format!("{path}: {message}"),
+                    None => message,
+                },
+            }
+        };
+        let mut deserializer = ron::Deserializer::from_str_with_options(text, &options())
+            .map_err(|error| syntax(error, None))?;
+        let mut track = serde_path_to_error::Track::new();
+        let parsed = Scenario::deserialize(serde_path_to_error::Deserializer::new(
+            &mut deserializer,
+            &mut track,
+        ));
+        let mut scenario = match parsed {
+            Ok(scenario) => scenario,
+            Err(error) => {
+                let spanned = deserializer.span_error(error);
+                return Err(syntax(spanned, Some(track.path().to_string())));
+            }
+        };
+        deserializer
+            .end()
+            .map_err(|error| syntax(deserializer.span_error(error), None))?;
         scenario.source = source.to_owned();
         scenario.validate()?;
         Ok(scenario)

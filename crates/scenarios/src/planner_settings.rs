@@ -34,10 +34,16 @@ pub struct PlannerSettings {
     /// Samples, accepted or not, per phase (default 4000).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub samples_per_phase: Option<usize>,
+    /// Budgets follow the route: at least this many accepted nodes per phase
+    /// for each step of the straight route, samples in proportion (default
+    /// 2.5; 0 keeps `nodes_per_phase` and `samples_per_phase` as given; see
+    /// `docs/scenario-format.md`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nodes_per_route_step: Option<f64>,
     /// Restarts after both phases fail (default 3).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_restarts: Option<usize>,
-    /// Largest course change at one node, degrees (default 45).
+    /// Largest course change at one node, degrees (default 30).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_turn_per_step_deg: Option<f64>,
     /// Margin around the start-goal box for random samples, nautical miles
@@ -104,6 +110,7 @@ impl PlannerSettings {
             ("clearance_m", self.clearance_m),
             ("step_m", self.step_m),
             ("goal_tolerance_m", self.goal_tolerance_m),
+            ("nodes_per_route_step", self.nodes_per_route_step),
             ("goal_bias", self.goal_bias),
             ("phase_two_goal_bias", self.phase_two_goal_bias),
             ("max_turn_per_step_deg", self.max_turn_per_step_deg),
@@ -146,6 +153,11 @@ impl PlannerSettings {
         set(&mut config.step_m, self.step_m, same);
         set(&mut config.goal_tolerance_m, self.goal_tolerance_m, same);
         set(&mut config.goal_bias, self.goal_bias, same);
+        set(
+            &mut config.nodes_per_route_step,
+            self.nodes_per_route_step,
+            same,
+        );
         set(
             &mut config.phase_two_goal_bias,
             self.phase_two_goal_bias,
@@ -247,7 +259,10 @@ pub(crate) fn describe_config_error(error: &PlannerError) -> (String, String) {
     let (file_field, file_value, expected) = to_file_units(field, value, expected);
     (
         format!("planner.{file_field}"),
-        format!("is {file_value}, expected {expected}"),
+        format!(
+            "is {}, expected {expected}",
+            vorrt_planner::error::Readable(file_value)
+        ),
     )
 }
 
@@ -305,6 +320,7 @@ mod tests {
             phase_two_goal_bias: Some(0.1),
             nodes_per_phase: Some(600),
             samples_per_phase: Some(9000),
+            nodes_per_route_step: Some(4.0),
             max_restarts: Some(5),
             max_turn_per_step_deg: Some(30.0),
             sampling_margin_nm: Some(1.5),
@@ -322,12 +338,13 @@ mod tests {
             stand_on_action_range_nm: Some(1.5),
             apparent_turn_deg: Some(35.0),
         };
-        assert_eq!(settings.set_numbers().len(), 19);
+        assert_eq!(settings.set_numbers().len(), 20);
         let config = settings.apply_to(PlannerConfig::default());
         config.validate().expect("valid");
         assert_eq!(config.clearance_m, 100.0);
         assert_eq!(config.step_m, 50.0);
         assert_eq!(config.goal_tolerance_m, 60.0);
+        assert_eq!(config.nodes_per_route_step, 4.0);
         assert_eq!(config.goal_bias, 0.3);
         assert_eq!(config.phase_two_goal_bias, 0.1);
         assert_eq!(config.nodes_per_phase, 600);

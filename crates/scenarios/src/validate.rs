@@ -3,8 +3,10 @@
 use crate::error::ScenarioError;
 use crate::planner_settings::describe_config_error;
 use crate::scenario::{Lane, Scenario, VesselSpec};
+use vorrt_colregs::rules;
 use vorrt_geometry::DVec2;
 use vorrt_planner::PlannerConfig;
+use vorrt_planner::error::Readable;
 
 /// The most targets one scenario may hold.
 pub const MAX_TARGETS: usize = 256;
@@ -15,6 +17,15 @@ pub const MAX_EXTENT_NM: f64 = 10_000.0;
 pub const MAX_SPEED_KN: f64 = 100.0;
 /// The longest vessel a scenario may hold, metres.
 pub const MAX_LENGTH_M: f64 = 1_000.0;
+/// The longest name (of the scenario, a vessel or a lane), in characters:
+/// names go into tables, plots and file names.
+pub const MAX_NAME_CHARS: usize = 200;
+/// The longest description, in characters.
+pub const MAX_DESCRIPTION_CHARS: usize = 10_000;
+/// The most steps `d'` (`planner.step_m`) ownship's straight route may take:
+/// keeps one plan within seconds (the planner's budgets follow the route
+/// length, see `PlannerConfig::for_route`).
+pub const MAX_ROUTE_STEPS: f64 = 10_000.0;
 /// The most simulation steps (`max_duration_s / time_step_s`) a scenario may
 /// ask for.
 pub const MAX_SIMULATION_STEPS: f64 = 10_000_000.0;
@@ -28,11 +39,40 @@ enum Who<'a> {
 
 impl Who<'_> {
     fn field(self, field: &str) -> String {
+        format!("{}.{field}", self.vessel())
+    }
+
+    fn vessel(self) -> String {
         match self {
-            Who::Ownship => format!("ownship.{field}"),
-            Who::Target(index, name) => format!("targets[{index}] {name:?}.{field}"),
+            Who::Ownship => "ownship".to_owned(),
+            Who::Target(index, name) => format!("targets[{index}] {name:?}"),
         }
     }
+}
+
+/// The start field a vessel uses.
+fn start_field(vessel: &VesselSpec) -> &'static str {
+    if vessel.start_nm.is_some() {
+        "start_nm"
+    } else if vessel.start_m.is_some() {
+        "start_m"
+    } else {
+        "start_lat_lon"
+    }
+}
+
+/// A name is not blank and at most [`MAX_NAME_CHARS`] long.
+fn check_name(name: &str) -> Result<(), String> {
+    if name.trim().is_empty() {
+        return Err("must not be empty".into());
+    }
+    let chars = name.chars().count();
+    if chars > MAX_NAME_CHARS {
+        return Err(format!(
+            "holds {chars} characters, more than the {MAX_NAME_CHARS} allowed"
+        ));
+    }
+    Ok(())
 }
 
 impl Scenario {
@@ -50,8 +90,17 @@ impl Scenario {
             field,
             problem,
         };
-        if self.name.trim().is_empty() {
-            return Err(invalid("name".into(), "must not be empty".into()));
+        check_name(&self.name).map_err(|problem| invalid("name".into(), problem))?;
+        if let Some(description) = &self.description {
+            let chars = description.chars().count();
+            if chars > MAX_DESCRIPTION_CHARS {
+                return Err(invalid(
+                    "description".into(),
+                    format!(
+                        "holds {chars} characters, more than the {MAX_DESCRIPTION_CHARS} allowed"
+                    ),
+                ));
+            }
         }
         self.check_geographic().map_err(|(f, p)| invalid(f, p))?;
         check_vessel(&mut self.ownship, Who::Ownship).map_err(|(f, p)| invalid(f, p))?;
@@ -73,8 +122,11 @@ impl Scenario {
         let config = self
             .checked_planner_config()
             .map_err(|(f, p)| invalid(f, p))?;
+        self.check_route(&config).map_err(|(f, p)| invalid(f, p))?;
         self.check_clearance(&config)
             .map_err(|(f, p)| invalid(f, p))?;
+        // Long ships can touch beyond the clearance.
+        self.check_hulls_apart().map_err(|(f, p)| invalid(f, p))?;
         self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
         for (index, lane) in self.lanes.iter().enumerate() {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
@@ -102,7 +154,7 @@ impl Scenario {
             if !value.is_finite() {
                 return Err((
                     format!("planner.{name}"),
-                    format!("is {value}, not a finite number"),
+                    format!("is {}, not a finite number", Readable(value)),
                 ));
             }
         }
@@ -135,23 +187,66 @@ impl Scenario {
         Ok(())
     }
 
+    /// No target starts in hull contact with ownship: closer than half the
+    /// sum of their lengths (`vorrt_colregs::rules::in_contact`, the one
+    /// definition of collision). Evaluation judges ownship against each
+    /// target, so only those pairs count; targets may pass through each
+    /// other, as generated traffic does.
+    fn check_hulls_apart(&self) -> Result<(), (String, String)> {
+        let own = self.ownship.start_position_m();
+        for (index, target) in self.targets.iter().enumerate() {
+            let range = own.distance(target.start_position_m());
+            let (own_length_m, length_m) = (self.ownship.length_m, target.length_m);
+            if rules::in_contact(range, own_length_m, length_m) {
+                let contact = rules::contact_range_m(own_length_m, length_m);
+                return Err((
+                    Who::Target(index, &target.name).field(start_field(target)),
+                    format!(
+                        "is {range:.1} m from ownship {:?} at the start, less than half the sum of their lengths ({contact:.1} m): the two start in collision",
+                        self.ownship.name
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Ownship's straight route takes at most [`MAX_ROUTE_STEPS`] steps.
+    fn check_route(&self, config: &PlannerConfig) -> Result<(), (String, String)> {
+        let Some(goal) = self.ownship.goal_position_m() else {
+            return Ok(());
+        };
+        let route_m = goal.distance(self.ownship.start_position_m());
+        let steps = route_m / config.step_m;
+        if steps > MAX_ROUTE_STEPS {
+            let field = if self.ownship.goal_nm.is_some() {
+                "goal_nm"
+            } else {
+                "goal_m"
+            };
+            return Err((
+                Who::Ownship.field(field),
+                format!(
+                    "is {} nm from ownship's start: {} steps of planner.step_m = {} m, more than the {MAX_ROUTE_STEPS} a plan may take (split the route, or raise planner.step_m)",
+                    Readable(route_m / vorrt_geometry::units::NAUTICAL_MILE_M),
+                    Readable(steps.round()),
+                    Readable(config.step_m)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     fn check_clearance(&self, config: &PlannerConfig) -> Result<(), (String, String)> {
         let own = self.ownship.start_position_m();
         for (index, target) in self.targets.iter().enumerate() {
             let range = own.distance(target.start_position_m());
             if range < config.clearance_m {
-                let field = if target.start_nm.is_some() {
-                    "start_nm"
-                } else if target.start_m.is_some() {
-                    "start_m"
-                } else {
-                    "start_lat_lon"
-                };
                 return Err((
-                    Who::Target(index, &target.name).field(field),
+                    Who::Target(index, &target.name).field(start_field(target)),
                     format!(
                         "is {range:.1} m from ownship's start, inside the planner clearance of {} m",
-                        config.clearance_m
+                        Readable(config.clearance_m)
                     ),
                 ));
             }
@@ -170,7 +265,10 @@ impl Scenario {
             if let Some(value) = value.filter(|value| !(value.is_finite() && *value > 0.0)) {
                 return Err((
                     format!("simulation.{name}"),
-                    format!("is {value}, expected a finite number greater than 0"),
+                    format!(
+                        "is {}, expected a finite number greater than 0",
+                        Readable(value)
+                    ),
                 ));
             }
         }
@@ -179,8 +277,9 @@ impl Scenario {
             return Err((
                 "simulation.time_step_s".into(),
                 format!(
-                    "makes {steps:.0} steps of the {} s simulation, more than the {MAX_SIMULATION_STEPS} allowed",
-                    self.max_duration_s()
+                    "makes {} steps of the {} s simulation, more than the {MAX_SIMULATION_STEPS} allowed",
+                    Readable(steps.round()),
+                    Readable(self.max_duration_s())
                 ),
             ));
         }
@@ -201,7 +300,7 @@ fn check_position(
         if !value.is_finite() {
             return Err((
                 who.field(field),
-                format!("holds {value}, not a finite number"),
+                format!("holds {}, not a finite number", Readable(value)),
             ));
         }
     }
@@ -222,9 +321,7 @@ fn normalise_course_deg(course_deg: f64) -> f64 {
 }
 
 fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, String)> {
-    if vessel.name.trim().is_empty() {
-        return Err((who.field("name"), "must not be empty".into()));
-    }
+    check_name(&vessel.name).map_err(|problem| (who.field("name"), problem))?;
     let m_to_nm = 1.0 / vorrt_geometry::units::NAUTICAL_MILE_M;
     check_position(who, "start_nm", vessel.start_nm, 1.0)?;
     check_position(who, "start_m", vessel.start_m, m_to_nm)?;
@@ -258,14 +355,20 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
     ];
     for (field, value) in numbers {
         if !value.is_finite() {
-            return Err((who.field(field), format!("is {value}, not a finite number")));
+            return Err((
+                who.field(field),
+                format!("is {}, not a finite number", Readable(value)),
+            ));
         }
     }
     vessel.course_deg = normalise_course_deg(vessel.course_deg);
     if vessel.speed_kn < 0.0 {
         return Err((
             who.field("speed_kn"),
-            format!("is {}, speeds must not be negative", vessel.speed_kn),
+            format!(
+                "is {}, speeds must not be negative",
+                Readable(vessel.speed_kn)
+            ),
         ));
     }
     if vessel.speed_kn > MAX_SPEED_KN {
@@ -273,7 +376,7 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
             who.field("speed_kn"),
             format!(
                 "is {}, more than the {MAX_SPEED_KN} kn allowed",
-                vessel.speed_kn
+                Readable(vessel.speed_kn)
             ),
         ));
     }
@@ -282,7 +385,7 @@ fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, St
             who.field("length_m"),
             format!(
                 "is {}, expected more than 0 and at most {MAX_LENGTH_M} m",
-                vessel.length_m
+                Readable(vessel.length_m)
             ),
         ));
     }
@@ -299,8 +402,11 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
         return Err((
             who.field("speed_kn"),
             format!(
-                "is {}, ownship must move (speed greater than 0, at least 0.002 kn)",
-                ownship.speed_kn
+                "is {}, ownship must move: at least {} kn",
+                Readable(ownship.speed_kn),
+                Readable(vorrt_geometry::units::mps_to_knots(
+                    vorrt_planner::problem::MIN_OWNSHIP_SPEED_MPS
+                ))
             ),
         ));
     }
@@ -328,9 +434,7 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
 
 fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
     let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
-    if lane.name.trim().is_empty() {
-        return Err((field("name"), "must not be empty".into()));
-    }
+    check_name(&lane.name).map_err(|problem| (field("name"), problem))?;
     check_position(Who::Ownship, "", Some(lane.from_nm), 1.0)
         .map_err(|(_, p)| (field("from_nm"), p))?;
     check_position(Who::Ownship, "", Some(lane.to_nm), 1.0)
@@ -339,8 +443,8 @@ fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
         return Err((
             field("width_nm"),
             format!(
-                "is {}, expected a finite number greater than 0",
-                lane.width_nm
+                "is {}, expected a finite number greater than 0 and at most {MAX_EXTENT_NM} nm",
+                Readable(lane.width_nm)
             ),
         ));
     }

@@ -9,11 +9,16 @@
 //! that was not a success. `merge` writes the same rows, summary and plots
 //! for several shard folders together.
 
-use crate::commands::{CliError, ExitStatus, folder_name};
-use crate::font;
-use clap::{Args, ValueEnum};
-use plotters::prelude::*;
-use serde::Serialize;
+mod histogram;
+mod merge;
+
+use crate::args::{BatchArgs, BehaviourName, DirectionName, GenerateArgs, GeneratorArgs, Kind};
+use crate::console;
+use crate::error::{CliError, ExitStatus};
+use crate::run::folder_name;
+use histogram::write_histograms;
+use merge::RunInfo;
+pub(crate) use merge::merge_command;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -23,71 +28,6 @@ use vorrt_scenarios::batch::{
 use vorrt_scenarios::generator::{
     GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection, TssSpec,
 };
-
-/// Which generator.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Kind {
-    /// Open-sea encounters: targets on near-collision courses (see
-    /// docs/evaluation.md).
-    OpenSea,
-    /// Crossings of a traffic separation scheme.
-    Tss,
-}
-
-/// How the generated targets move.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum BehaviourName {
-    /// Straight for their goals at constant speed (the paper's).
-    Constant,
-    /// Give way to ownship by COLREGs when they must (35° to starboard).
-    Colregs,
-    /// Course and speed wander about the nominal (5°, 0.5 kn).
-    Noisy,
-    /// Turn 30-90° to a random side, unannounced, before the closest approach.
-    SuddenTurn,
-}
-
-/// Lane layout of a generated TSS.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum DirectionName {
-    /// One lane, traffic flowing west.
-    Westbound,
-    /// One lane, traffic flowing east.
-    Eastbound,
-    /// Two lanes with a separation zone.
-    TwoWay,
-}
-
-/// The generator options shared by `batch --generate` and `generate`.
-#[derive(Debug, Clone, Args)]
-pub struct GeneratorArgs {
-    /// Open sea: number of targets per scenario (1-64).
-    #[arg(long, value_name = "N")]
-    pub targets: Option<usize>,
-    /// TSS: traffic density, targets per nautical mile of lane [default: 1].
-    #[arg(long, value_name = "PER_NM")]
-    pub density: Option<f64>,
-    /// TSS: lane layout.
-    #[arg(long, value_enum, default_value = "westbound")]
-    pub direction: DirectionName,
-    /// TSS: lane width, nautical miles.
-    #[arg(long, value_name = "NM", default_value_t = 1.0)]
-    pub lane_width: f64,
-    /// Number of scenarios in the whole batch (before sharding).
-    #[arg(long, value_name = "K", default_value_t = 100)]
-    pub count: u64,
-    /// Batch seed: scenario k is drawn from stream k of this seed and
-    /// simulated with a seed derived from (seed, k).
-    #[arg(long, value_name = "S", default_value_t = 1)]
-    pub seed: u64,
-    /// How the targets move.
-    #[arg(long, value_enum, default_value = "constant")]
-    pub behaviour: BehaviourName,
-    /// Only the scenarios k with k % n == i (e.g. --shard
-    /// $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT).
-    #[arg(long, value_name = "i/n")]
-    pub shard: Option<String>,
-}
 
 impl GeneratorArgs {
     fn behaviour(&self) -> TargetBehaviour {
@@ -144,105 +84,50 @@ impl GeneratorArgs {
     }
 }
 
-/// `vorrt batch`.
-#[derive(Debug, Clone, Args)]
-pub struct BatchArgs {
-    /// Generate the scenarios.
-    #[arg(
-        long,
-        value_enum,
-        value_name = "KIND",
-        conflicts_with = "dir",
-        required_unless_present = "dir"
-    )]
-    pub generate: Option<Kind>,
-    /// Run the scenario files (*.ron) of this folder instead, in file-name
-    /// order; each with its own `seed` if it has one.
-    #[arg(long, value_name = "FOLDER")]
-    pub dir: Option<PathBuf>,
-    /// The generator, seed and shard options.
-    #[command(flatten)]
-    pub generator: GeneratorArgs,
-    /// Worker threads [default: one per core].
-    #[arg(long, value_name = "N")]
-    pub jobs: Option<usize>,
-    /// Output folder.
-    #[arg(long, value_name = "DIR")]
-    pub out: PathBuf,
-    /// Also write every run's trajectory.csv, into
-    /// `DIR/runs/<index>-<scenario name>/`.
-    #[arg(long)]
-    pub trajectories: bool,
-}
-
-/// `vorrt generate`.
-#[derive(Debug, Clone, Args)]
-pub struct GenerateArgs {
-    /// Which generator.
-    #[arg(value_enum)]
-    pub kind: Kind,
-    /// The generator, seed and shard options.
-    #[command(flatten)]
-    pub generator: GeneratorArgs,
-    /// Output folder for the .ron files.
-    #[arg(long, value_name = "DIR")]
-    pub out: PathBuf,
-}
-
-/// `vorrt merge`.
-#[derive(Debug, Clone, Args)]
-pub struct MergeArgs {
-    /// Shard output folders (each holding rows.csv) or rows CSV files.
-    #[arg(required = true, value_name = "DIR")]
-    pub inputs: Vec<PathBuf>,
-    /// Output folder.
-    #[arg(long, value_name = "DIR")]
-    pub out: PathBuf,
-}
-
-/// How a batch was made: `run.json`.
-#[derive(Debug, Serialize)]
-struct RunInfo {
-    vorrt_version: &'static str,
-    command: Vec<String>,
-    generator: Option<GeneratorSpec>,
-    dir: Option<PathBuf>,
-    seed: u64,
-    count: u64,
-    shard: String,
-    scenarios_run: usize,
-    threads: usize,
-    wall_time_s: f64,
-}
-
-fn output_error(path: &Path) -> impl FnOnce(std::io::Error) -> CliError + '_ {
+pub(crate) fn output_error(path: &Path) -> impl FnOnce(std::io::Error) -> CliError + '_ {
     move |error| CliError::Output(format!("cannot write {}: {error}", path.display()))
 }
 
-fn batch_error(error: batch::BatchError) -> CliError {
+pub(crate) fn batch_error(error: batch::BatchError) -> CliError {
     match error {
         batch::BatchError::Io { .. } => CliError::Output(error.to_string()),
         other => CliError::BadInput(other.to_string()),
     }
 }
 
-/// Runs `vorrt batch`.
+/// Creates the output folder and checks that files can be written into it,
+/// before any scenario runs.
 ///
 /// # Errors
-/// [`CliError::BadInput`] for bad options or scenarios, [`CliError::Output`]
-/// when the output cannot be written.
-pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
-    let shard = args.generator.shard()?;
-    let started = Instant::now();
-    let (items, generator) = match (&args.generate, &args.dir) {
+/// [`CliError::Output`] naming the folder.
+pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
+    let cannot = |error: std::io::Error| {
+        CliError::Output(format!(
+            "cannot write into the output folder {}: {error}",
+            dir.display()
+        ))
+    };
+    std::fs::create_dir_all(dir).map_err(cannot)?;
+    let probe = dir.join(".vorrt-write-check");
+    std::fs::write(&probe, b"").map_err(cannot)?;
+    std::fs::remove_file(&probe).map_err(cannot)
+}
+
+/// The scenarios of a batch or of `generate`, refused when there are none.
+fn items_of(
+    args: &GeneratorArgs,
+    kind: Option<Kind>,
+    dir: Option<&Path>,
+) -> Result<(Vec<BatchItem>, Option<GeneratorSpec>), CliError> {
+    let shard = args.shard()?;
+    let (items, generator) = match (kind, dir) {
         (Some(kind), _) => {
-            let spec = args.generator.spec(*kind)?;
-            let items = generate_items(&spec, args.generator.seed, args.generator.count, shard)
-                .map_err(batch_error)?;
+            let spec = args.spec(kind)?;
+            let items = generate_items(&spec, args.seed, args.count, shard).map_err(batch_error)?;
             (items, Some(spec))
         }
         (None, Some(dir)) => (
-            load_items(dir, args.generator.seed, shard).map_err(batch_error)?,
+            load_items(dir, args.seed, shard).map_err(batch_error)?,
             None,
         ),
         (None, None) => {
@@ -251,20 +136,47 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
             ));
         }
     };
+    if items.is_empty() {
+        let what = match dir {
+            Some(dir) if kind.is_none() => {
+                format!("{} holds no scenario files (*.ron)", dir.display())
+            }
+            _ => format!("--count {} makes no scenario", args.count),
+        };
+        return Err(CliError::BadInput(if shard == Shard::ALL {
+            what
+        } else {
+            format!("shard {shard} holds no scenario: {what} for it")
+        }));
+    }
+    Ok((items, generator))
+}
+
+/// Runs `vorrt batch`.
+///
+/// # Errors
+/// [`CliError::BadInput`] for bad options or scenarios, [`CliError::Output`]
+/// when the output cannot be written.
+pub(crate) fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
+    let started = Instant::now();
+    let (items, generator) = items_of(&args.generator, args.generate, args.dir.as_deref())?;
+    prepare_out(&args.out)?;
+    clean_failures(&args.out)?;
+    let shard = args.generator.shard()?;
     let pool = {
         let mut builder = rayon::ThreadPoolBuilder::new();
         if let Some(jobs) = args.jobs {
-            builder = builder.num_threads(jobs.max(1));
+            builder = builder.num_threads(jobs);
         }
         builder
             .build()
             .map_err(|error| CliError::BadInput(format!("cannot start worker threads: {error}")))?
     };
     let threads = pool.current_num_threads();
-    eprintln!(
+    console::warn(&format!(
         "running {} scenarios (shard {shard}) on {threads} threads",
         items.len()
-    );
+    ));
     let progress = Progress::new(items.len());
     let export_error = std::sync::Mutex::new(None);
     let export = |item: &BatchItem, record: &vorrt_scenarios::SimulationRecord| {
@@ -283,10 +195,11 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
     }
     progress.finish();
     let wall_time_s = started.elapsed().as_secs_f64();
-    let summary = write_all(&rows, &args.out)?;
+    // The scenario files of the failures first: they matter most.
     write_failures(&items, &rows, &args.out)?;
+    let summary = write_all(&rows, &args.out)?;
     let info = RunInfo {
-        vorrt_version: env!("CARGO_PKG_VERSION"),
+        vorrt_version: env!("CARGO_PKG_VERSION").to_owned(),
         command: std::env::args().collect(),
         generator,
         dir: args.dir.clone(),
@@ -296,12 +209,15 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
         scenarios_run: rows.len(),
         threads,
         wall_time_s,
+        merged_shards: Vec::new(),
+        missing_shards: Vec::new(),
     };
-    let path = args.out.join("run.json");
-    let json = serde_json::to_string_pretty(&info).unwrap_or_default();
-    std::fs::write(&path, json + "\n").map_err(output_error(&path))?;
-    print!("{}", summary_table(&summary));
-    println!("wall time {wall_time_s:.1} s; wrote {}", args.out.display());
+    info.write(&args.out)?;
+    console::print(&summary_table(&summary));
+    console::line(&format!(
+        "wall time {wall_time_s:.1} s; wrote {}",
+        args.out.display()
+    ));
     Ok(ExitStatus::Success)
 }
 
@@ -309,33 +225,21 @@ pub fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
 ///
 /// # Errors
 /// As [`batch_command`].
-pub fn generate_command(args: &GenerateArgs) -> Result<ExitStatus, CliError> {
-    let spec = args.generator.spec(args.kind)?;
-    let shard = args.generator.shard()?;
-    let items = generate_items(&spec, args.generator.seed, args.generator.count, shard)
-        .map_err(batch_error)?;
-    std::fs::create_dir_all(&args.out).map_err(output_error(&args.out))?;
+pub(crate) fn generate_command(args: &GenerateArgs) -> Result<ExitStatus, CliError> {
+    let (items, _) = items_of(&args.generator, Some(args.kind), None)?;
+    prepare_out(&args.out)?;
     for item in &items {
-        write_scenario(item, &args.out)?;
+        write_scenario(
+            item,
+            &args.out,
+            &format!("{}.ron", folder_name(&item.scenario.name)),
+        )?;
     }
-    println!("wrote {} scenarios to {}", items.len(), args.out.display());
-    Ok(ExitStatus::Success)
-}
-
-/// Runs `vorrt merge`.
-///
-/// # Errors
-/// [`CliError::BadInput`] when an input cannot be read or two inputs hold the
-/// same scenario; [`CliError::Output`] when the output cannot be written.
-pub fn merge_command(args: &MergeArgs) -> Result<ExitStatus, CliError> {
-    let rows = batch::read_shards(&args.inputs).map_err(batch_error)?;
-    let summary = write_all(&rows, &args.out)?;
-    print!("{}", summary_table(&summary));
-    println!(
-        "merged {} inputs into {}",
-        args.inputs.len(),
+    console::line(&format!(
+        "wrote {} scenarios to {}",
+        items.len(),
         args.out.display()
-    );
+    ));
     Ok(ExitStatus::Success)
 }
 
@@ -356,18 +260,50 @@ fn write_run_trajectory(
     std::fs::write(&path, text).map_err(output_error(&path))
 }
 
-fn write_scenario(item: &BatchItem, dir: &Path) -> Result<PathBuf, CliError> {
+fn write_scenario(item: &BatchItem, dir: &Path, file: &str) -> Result<PathBuf, CliError> {
     let text = item
         .scenario
         .to_ron_string()
         .map_err(|error| CliError::Output(error.to_string()))?;
-    let path = dir.join(format!("{}.ron", folder_name(&item.scenario.name)));
+    let path = dir.join(file);
     std::fs::write(&path, text).map_err(output_error(&path))?;
     Ok(path)
 }
 
+/// The folder of the failures' scenario files.
+const FAILURES: &str = "failures";
+
+/// The file name of a failed run's scenario in `failures/`: its batch index
+/// (unique within a batch, and across its shards) and its name.
+fn failure_file(item: &BatchItem) -> String {
+    format!("{:06}-{}.ron", item.index, folder_name(&item.scenario.name))
+}
+
+/// Removes the `*.ron` files a previous batch left in `DIR/failures/`, so
+/// that the folder holds only this batch's failures (documented in
+/// `docs/evaluation.md`).
+fn clean_failures(dir: &Path) -> Result<(), CliError> {
+    let folder = dir.join(FAILURES);
+    let Ok(entries) = std::fs::read_dir(&folder) else {
+        return Ok(());
+    };
+    for entry in entries.filter_map(Result::ok) {
+        let path = entry.path();
+        if path.is_file() && path.extension().is_some_and(|extension| extension == "ron") {
+            std::fs::remove_file(&path).map_err(|error| {
+                CliError::Output(format!(
+                    "cannot remove the old failure {}: {error}",
+                    path.display()
+                ))
+            })?;
+        }
+    }
+    Ok(())
+}
+
 /// Writes the scenario of every run that was not a success into
-/// `DIR/failures/` (nothing, and no folder, when all succeeded).
+/// `DIR/failures/` as [`failure_file`] (nothing, and no folder, when all
+/// succeeded).
 fn write_failures(items: &[BatchItem], rows: &[BatchRow], dir: &Path) -> Result<(), CliError> {
     let failed: Vec<&BatchItem> = items
         .iter()
@@ -378,20 +314,20 @@ fn write_failures(items: &[BatchItem], rows: &[BatchRow], dir: &Path) -> Result<
     if failed.is_empty() {
         return Ok(());
     }
-    let folder = dir.join("failures");
+    let folder = dir.join(FAILURES);
     std::fs::create_dir_all(&folder).map_err(output_error(&folder))?;
     for item in failed {
         let mut item = item.clone();
         // The file carries the seed it was run with, so `vorrt simulate`
         // repeats the run.
         item.scenario.seed = Some(item.seed);
-        write_scenario(&item, &folder)?;
+        write_scenario(&item, &folder, &failure_file(&item))?;
     }
     Ok(())
 }
 
 /// Rows, summary and plots.
-fn write_all(rows: &[BatchRow], dir: &Path) -> Result<BatchSummary, CliError> {
+pub(crate) fn write_all(rows: &[BatchRow], dir: &Path) -> Result<BatchSummary, CliError> {
     let summary = batch::write_outputs(rows, dir).map_err(batch_error)?;
     write_histograms(rows, dir).map_err(CliError::Output)?;
     Ok(summary)
@@ -441,7 +377,7 @@ impl Progress {
                     bar.println(format!("{}: {outcome}", row.name));
                 }
             }
-            None => eprintln!("[{done}/{}] {}: {outcome}", self.total, row.name),
+            None => console::warn(&format!("[{done}/{}] {}: {outcome}", self.total, row.name)),
         }
     }
 
@@ -462,7 +398,7 @@ fn number(value: Option<f64>, digits: usize) -> String {
 
 /// The summary as a small text table.
 #[must_use]
-pub fn summary_table(summary: &BatchSummary) -> String {
+pub(crate) fn summary_table(summary: &BatchSummary) -> String {
     use std::fmt::Write as _;
     let mut text = String::new();
     let _ = writeln!(text, "scenarios            {}", summary.count);
@@ -533,110 +469,4 @@ pub fn summary_table(summary: &BatchSummary) -> String {
         summary.failed_plans, summary.runs_with_failed_plans
     );
     text
-}
-
-/// Writes `min_distance.svg` and `planning_time.svg`.
-///
-/// # Errors
-/// A message when a file cannot be drawn or written.
-pub fn write_histograms(rows: &[BatchRow], dir: &Path) -> Result<(), String> {
-    font::register();
-    let clearance = rows
-        .iter()
-        .map(|row| row.clearance_m)
-        .find(|value| value.is_finite());
-    let distances: Vec<f64> = rows
-        .iter()
-        .map(|row| row.min_distance_m)
-        .filter(|value| value.is_finite())
-        .collect();
-    histogram(
-        &dir.join("min_distance.svg"),
-        "Minimum distance to any target per run",
-        "minimum distance (m)",
-        &distances,
-        clearance,
-    )?;
-    let times: Vec<f64> = rows
-        .iter()
-        .filter(|row| row.error.is_empty())
-        .map(|row| row.planning_time_ms)
-        .collect();
-    histogram(
-        &dir.join("planning_time.svg"),
-        "Planning time per run (all planner calls)",
-        "planning time (ms)",
-        &times,
-        None,
-    )
-}
-
-const BINS: usize = 40;
-
-fn histogram(
-    path: &Path,
-    title: &str,
-    x_label: &str,
-    values: &[f64],
-    marker: Option<f64>,
-) -> Result<(), String> {
-    let text = |error: &dyn std::fmt::Display| format!("{}: {error}", path.display());
-    let high = values.iter().copied().fold(0.0, f64::max).max(1.0) * 1.0001;
-    let high = marker.map_or(high, |m| high.max(m * 1.1));
-    let width = high / BINS as f64;
-    let mut counts = [0u32; BINS];
-    for value in values {
-        let bin = ((value / width).floor().max(0.0) as usize).min(BINS - 1);
-        counts[bin] += 1;
-    }
-    let top = counts.iter().copied().max().unwrap_or(0).max(1);
-    let root = SVGBackend::new(path, (900, 520)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| text(&e))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            format!("{title} ({} runs)", values.len()),
-            (font::FAMILY, 20),
-        )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(0.0..high, 0u32..(top + top / 10 + 1))
-        .map_err(|e| text(&e))?;
-    chart
-        .configure_mesh()
-        .x_desc(x_label)
-        .y_desc("runs")
-        .label_style((font::FAMILY, 14))
-        .draw()
-        .map_err(|e| text(&e))?;
-    chart
-        .draw_series(
-            counts
-                .iter()
-                .enumerate()
-                .filter(|(_, c)| **c > 0)
-                .map(|(bin, count)| {
-                    let x0 = bin as f64 * width;
-                    Rectangle::new([(x0, 0), (x0 + width, *count)], BLUE.mix(0.6).filled())
-                }),
-        )
-        .map_err(|e| text(&e))?;
-    if let Some(marker) = marker {
-        chart
-            .draw_series(std::iter::once(PathElement::new(
-                vec![(marker, 0), (marker, top + top / 10 + 1)],
-                RED.stroke_width(2),
-            )))
-            .map_err(|e| text(&e))?
-            .label(format!("d_th = {marker:.0} m"))
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], RED.stroke_width(2)));
-        chart
-            .configure_series_labels()
-            .label_font((font::FAMILY, 14))
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(|e| text(&e))?;
-    }
-    root.present().map_err(|e| text(&e))
 }

@@ -1,0 +1,187 @@
+//! One row of results per scenario of a batch.
+
+use super::BatchItem;
+use crate::evaluation::Evaluation;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeSet;
+
+/// The results of one scenario of a batch: one CSV row.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BatchRow {
+    /// Position in the whole batch.
+    pub index: u64,
+    /// The scenario's name.
+    pub name: String,
+    /// Number of targets.
+    pub targets: usize,
+    /// The simulation seed.
+    pub seed: u64,
+    /// Whether ownship reached its goal.
+    pub reached_goal: bool,
+    /// Whether any hull touched another.
+    pub collision: bool,
+    /// Smallest distance to any target, metres.
+    pub min_distance_m: f64,
+    /// The clearance `d_th` of the scenario, metres.
+    pub clearance_m: f64,
+    /// Whether any target came closer than `d_th`.
+    pub clearance_violation: bool,
+    /// Whether every encounter was handled compliantly (rules 13-17).
+    pub compliant: bool,
+    /// Rule 13 (overtaking): `None` when it never applied, else whether every
+    /// encounter it applied to scored full marks on it.
+    pub rule_13: Option<bool>,
+    /// Rule 14 (head-on), as `rule_13`.
+    pub rule_14: Option<bool>,
+    /// Rule 15 (crossing, give way), as `rule_13`.
+    pub rule_15: Option<bool>,
+    /// Rule 16 (action by give-way vessel), as `rule_13`.
+    pub rule_16: Option<bool>,
+    /// Rule 17 (action by stand-on vessel), as `rule_13`.
+    pub rule_17: Option<bool>,
+    /// Extra sailed length over the straight route, percent.
+    pub path_overhead_pct: f64,
+    /// Wall-clock planning time of the whole run, milliseconds.
+    pub planning_time_ms: f64,
+    /// Mean wall-clock time per planner call, milliseconds.
+    pub planning_time_per_plan_ms: f64,
+    /// Planner calls.
+    pub plans: usize,
+    /// Planner calls after the first.
+    pub replans: usize,
+    /// Planner calls that failed.
+    pub failed_plans: usize,
+    /// The target that came closest.
+    pub closest_target: String,
+    /// Its encounter type (`none` if risk never arose).
+    pub closest_encounter: String,
+    /// Every distinct finding over all targets, `;`-separated
+    /// (`clearance_violated;late_action`).
+    pub violations: String,
+    /// Why the scenario could not be run at all (empty when it ran).
+    pub error: String,
+}
+
+impl BatchRow {
+    /// Whether the run counts as a success: goal reached, no collision, `d_th` kept.
+    #[must_use]
+    pub fn success(&self) -> bool {
+        self.error.is_empty() && self.reached_goal && !self.collision && !self.clearance_violation
+    }
+
+    /// The compliance with `rule` (13-17), as in the row.
+    #[must_use]
+    pub fn rule(&self, rule: u8) -> Option<bool> {
+        match rule {
+            13 => self.rule_13,
+            14 => self.rule_14,
+            15 => self.rule_15,
+            16 => self.rule_16,
+            17 => self.rule_17,
+            _ => None,
+        }
+    }
+
+    /// The row of a run that could not be made.
+    pub(super) fn failed(item: &BatchItem, error: String) -> Self {
+        Self {
+            index: item.index,
+            name: item.scenario.name.clone(),
+            targets: item.scenario.targets.len(),
+            seed: item.seed,
+            reached_goal: false,
+            collision: false,
+            min_distance_m: f64::NAN,
+            clearance_m: f64::NAN,
+            clearance_violation: false,
+            compliant: false,
+            rule_13: None,
+            rule_14: None,
+            rule_15: None,
+            rule_16: None,
+            rule_17: None,
+            path_overhead_pct: f64::NAN,
+            planning_time_ms: 0.0,
+            planning_time_per_plan_ms: 0.0,
+            plans: 0,
+            replans: 0,
+            failed_plans: 0,
+            closest_target: String::new(),
+            closest_encounter: String::new(),
+            violations: String::new(),
+            error,
+        }
+    }
+
+    /// The row of an evaluated run.
+    #[must_use]
+    pub fn from_evaluation(item: &BatchItem, evaluation: &Evaluation) -> Self {
+        let rule = |rule: u8| -> Option<bool> {
+            let scores: Vec<f64> = evaluation
+                .targets
+                .iter()
+                .filter_map(|target| target.assessment.as_ref())
+                .filter_map(|assessment| {
+                    assessment
+                        .scores
+                        .applicable()
+                        .into_iter()
+                        .find(|(number, _)| *number == rule)
+                        .map(|(_, score)| score)
+                })
+                .collect();
+            (!scores.is_empty()).then(|| scores.iter().all(|score| *score >= 1.0))
+        };
+        let closest = evaluation
+            .targets
+            .iter()
+            .min_by(|a, b| a.min_distance_m.total_cmp(&b.min_distance_m));
+        let mut findings = BTreeSet::new();
+        for target in &evaluation.targets {
+            match &target.assessment {
+                Some(assessment) => {
+                    findings.extend(assessment.violations.iter().map(|v| v.name()));
+                }
+                None if !target.clearance_kept => {
+                    findings.insert("clearance_violated");
+                }
+                None => {}
+            }
+        }
+        let plans = evaluation.plans_made + evaluation.failed_plans;
+        let planning_time_ms = 1000.0 * evaluation.planning_time_s;
+        Self {
+            index: item.index,
+            name: evaluation.scenario.clone(),
+            targets: evaluation.targets.len(),
+            seed: evaluation.seed,
+            reached_goal: evaluation.reached_goal,
+            collision: evaluation.collision,
+            min_distance_m: evaluation.min_distance_m,
+            clearance_m: evaluation.clearance_m,
+            clearance_violation: !evaluation.clearance_kept,
+            compliant: evaluation.compliant,
+            rule_13: rule(13),
+            rule_14: rule(14),
+            rule_15: rule(15),
+            rule_16: rule(16),
+            rule_17: rule(17),
+            path_overhead_pct: evaluation.path_overhead_pct,
+            planning_time_ms,
+            planning_time_per_plan_ms: if plans > 0 {
+                planning_time_ms / plans as f64
+            } else {
+                0.0
+            },
+            plans,
+            replans: evaluation.replans,
+            failed_plans: evaluation.failed_plans,
+            closest_target: closest.map(|t| t.name.clone()).unwrap_or_default(),
+            closest_encounter: closest
+                .map(|t| t.encounter.name().to_owned())
+                .unwrap_or_default(),
+            violations: findings.into_iter().collect::<Vec<_>>().join(";"),
+            error: String::new(),
+        }
+    }
+}
