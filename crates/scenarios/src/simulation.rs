@@ -687,13 +687,11 @@ fn plan_now(
                 return;
             }
             Err(error) => {
-                if let vorrt_planner::PlannerError::NoSafePath { statistics }
-                | vorrt_planner::PlannerError::BudgetExhausted { statistics, .. } = &error
-                {
+                if let Some(statistics) = error.statistics() {
                     spent.elapsed_s += statistics.elapsed_s;
                     if first_error.is_none() {
                         let elapsed_s = spent.elapsed_s;
-                        spent = **statistics;
+                        spent = *statistics;
                         spent.elapsed_s = elapsed_s;
                     }
                 }
