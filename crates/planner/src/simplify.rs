@@ -16,9 +16,11 @@
 //! valid leg is sought: the goal first, then by a galloping search (1, 2, 4,
 //! ... points on, then bisection), which assumes nearer points are easier to
 //! reach; when the next point itself cannot be reached, a few more are tried.
-//! After the first leg, before the branch's points, the simplifier tries the
-//! manoeuvre mariners use: hold the course just taken for a while
-//! ([`HOLD_M`], shortest first), then one leg to the goal.
+//! Before the branch's points, at every step, the simplifier tries the
+//! manoeuvre mariners use: one alteration of course ([`ALTERATIONS_DEG`],
+//! smallest first; none at all first of all), held for a while ([`HOLD_M`],
+//! shortest first), then one leg to the goal. The branch is what is left
+//! when no such manoeuvre is valid, as among several vessels.
 
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
@@ -99,11 +101,15 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
             legs.push(leg);
             break;
         }
-        // Hold the present course a while, then head for the goal: an
-        // alteration held until the other vessel is past, then one return.
-        if !legs.is_empty()
-            && let Some((hold, back)) =
-                hold_then_goal(model, validator, &legs, speed_mps, points[last])
+        // The manoeuvre mariners use: turn onto a course (or hold the present
+        // one), hold it a while, then one leg to the goal.
+        let from = SimplifiedLeg {
+            leg: Leg::straight(pose.position_m, pose.course_rad, 0.0, speed_mps),
+            end_elapsed_s: elapsed_s,
+            state: state.clone(),
+        };
+        if let Some((hold, back)) =
+            alter_hold_return(model, validator, &from, speed_mps, points[last])
         {
             legs.push(hold);
             legs.push(back);
@@ -119,52 +125,65 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
     Some(legs)
 }
 
-/// Runs the present course on for the shortest of [`HOLD_M`] after which a
-/// leg to the goal is valid too: the two legs, or `None`.
-fn hold_then_goal<M: MotionModel, V: MotionValidator>(
+/// From where `from` ends, the first manoeuvre of the form "turn onto the
+/// present course plus one of [`ALTERATIONS_DEG`], hold it for one of
+/// [`HOLD_M`], then one leg to the goal" that the validator accepts, trying
+/// the smallest alteration first (holding on, then starboard, then port) and
+/// for each the shortest hold: the two legs, or `None`.
+fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
-    legs: &[SimplifiedLeg],
+    from: &SimplifiedLeg,
     speed_mps: f64,
     goal_m: DVec2,
 ) -> Option<(SimplifiedLeg, SimplifiedLeg)> {
-    let last = legs.last()?;
-    let pose = last.leg.end_pose();
-    for hold_m in HOLD_M {
-        let hold = Leg::straight(pose.position_m, pose.course_rad, hold_m, speed_mps);
-        let mut after_hold = last.state.clone();
-        if validator
-            .validate(&hold, last.end_elapsed_s, &mut after_hold)
-            .is_err()
-        {
-            // Holding on is already invalid this far: longer holds are too.
-            return None;
-        }
-        let hold_end_s = last.end_elapsed_s + hold.duration_s();
-        let Some(back) = model.steer(hold.end_pose(), goal_m, speed_mps, f64::INFINITY) else {
-            continue;
-        };
-        let mut after_back = after_hold.clone();
-        if validator
-            .validate(&back, hold_end_s, &mut after_back)
-            .is_ok()
-        {
-            return Some((
-                SimplifiedLeg {
-                    leg: hold,
-                    end_elapsed_s: hold_end_s,
-                    state: after_hold,
-                },
-                SimplifiedLeg {
-                    end_elapsed_s: hold_end_s + back.duration_s(),
-                    leg: back,
-                    state: after_back,
-                },
-            ));
+    let pose = from.leg.end_pose();
+    for alteration_deg in ALTERATIONS_DEG {
+        let course_rad = pose.course_rad + alteration_deg.to_radians();
+        for hold_m in HOLD_M {
+            let hold = model.turn_onto(pose, course_rad, speed_mps, hold_m);
+            let mut after_hold = from.state.clone();
+            if validator
+                .validate(&hold, from.end_elapsed_s, &mut after_hold)
+                .is_err()
+            {
+                // Holding on is already invalid this far: longer holds are too.
+                break;
+            }
+            let hold_end_s = from.end_elapsed_s + hold.duration_s();
+            let Some(back) = model.steer(hold.end_pose(), goal_m, speed_mps, f64::INFINITY) else {
+                continue;
+            };
+            let mut after_back = after_hold.clone();
+            if validator
+                .validate(&back, hold_end_s, &mut after_back)
+                .is_ok()
+            {
+                return Some((
+                    SimplifiedLeg {
+                        leg: hold,
+                        end_elapsed_s: hold_end_s,
+                        state: after_hold,
+                    },
+                    SimplifiedLeg {
+                        end_elapsed_s: hold_end_s + back.duration_s(),
+                        leg: back,
+                        state: after_back,
+                    },
+                ));
+            }
         }
     }
     None
 }
+
+/// The alterations of course the manoeuvre search tries, degrees (positive
+/// to starboard), in order: holding on, then readily apparent alterations to
+/// starboard (rules 14, 15, 16: at least 30°), then to port (where the rules
+/// allow it: overtaking, or a stand-on vessel that may act).
+pub const ALTERATIONS_DEG: [f64; 12] = [
+    0.0, 30.0, 40.0, 50.0, 60.0, 75.0, 90.0, -30.0, -40.0, -50.0, -60.0, -90.0,
+];
 
 /// How far the present course is held before heading for the goal, metres,
 /// shortest first (the earliest valid return wins).

@@ -129,10 +129,13 @@ impl MotionValidator for SafetyChecker<'_> {
                 duration_s: piece.duration_s,
             };
             if piece.turning {
+                // The encounters are judged, and advanced, on the course the
+                // turn settles on: a heading swept through neither passes an
+                // encounter nor makes an alteration.
                 self.check_clearance(&candidate, chord_error_m)?;
-            } else {
-                self.check(&candidate, &state.latches, &state.alterations)?;
+                continue;
             }
+            self.check(&candidate, &state.latches, &state.alterations)?;
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
             let own_then = VesselState {
                 position_m: piece.end_m(),

@@ -347,7 +347,13 @@ fn head_on() -> PlanningProblem {
 
 #[test]
 fn different_seeds_may_differ() {
-    let mut planner = Planner::new(config()).unwrap();
+    // The tree's own branches differ by seed; the default plans, simplified
+    // into the manoeuvre a mariner would use, rightly often do not.
+    let mut planner = Planner::new(PlannerConfig {
+        turning: vorrt_planner::Turning::Instant,
+        ..config()
+    })
+    .unwrap();
     let plans: Vec<_> = (0..4)
         .map(|seed| planner.plan(&head_on(), seed).unwrap().waypoints)
         .collect();
