@@ -39,6 +39,11 @@ pub const ARRIVAL_TOLERANCE_M: f64 = 0.01;
 /// courses agree within this, radians (4°).
 pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
 
+/// A target whose course over ground is this far off the course to its
+/// announced destination is predicted on the course it is seen on, radians
+/// (10°, twice the course noise of a `noisy` target).
+pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
+
 /// After a failed plan, seconds until ownship tries again.
 pub const RETRY_AFTER_S: f64 = 20.0;
 
@@ -375,10 +380,12 @@ impl SimulatedTarget {
     }
 
     /// How ownship predicts the target: from what it broadcasts (AIS: course,
-    /// speed, destination), whatever it really does. A goal-bound target is
-    /// predicted steering for its goal at its nominal speed, any other holding
-    /// its course at its nominal speed (its present course and speed for
-    /// the constant-motion behaviours).
+    /// speed, destination) and what it is seen doing. A goal-bound target is
+    /// predicted steering for its goal at its nominal speed, unless it is
+    /// seen more than [`OBSERVED_TURN_RAD`] off that course: then it is
+    /// predicted holding the course it is on. Any other target holds its
+    /// course at its nominal speed (its present course and speed for the
+    /// constant-motion behaviours).
     fn announced(&self) -> TargetState {
         let vessel = self.state.vessel;
         match self.behaviour {
@@ -390,6 +397,24 @@ impl SimulatedTarget {
                 None => TargetState::constant_velocity(vessel),
             },
             _ => match self.state.goal_m {
+                // A turn seen over ground updates the prediction: a target
+                // well off the course to its destination is predicted to hold
+                // the course it is seen on (it is giving way, or has changed
+                // its mind), as AIS and radar show it.
+                Some(goal)
+                    if !self.state.has_arrived()
+                        && signed_turn(
+                            angle::unit_to_course(goal - vessel.position_m),
+                            vessel.course_rad,
+                        )
+                        .abs()
+                            > OBSERVED_TURN_RAD =>
+                {
+                    TargetState::constant_velocity(VesselState {
+                        speed_mps: self.nominal_speed_mps,
+                        ..vessel
+                    })
+                }
                 Some(goal) => {
                     let speed_mps = if self.state.has_arrived() {
                         0.0
