@@ -111,7 +111,9 @@ pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool
 
 /// Rules 8(b), 16: whether a course change (either way) is large enough to be
 /// readily apparent to another vessel: at least
-/// [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30° by default).
+/// [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30° by default),
+/// to within [`ANGLE_ROUNDING_RAD`] (a course over ground computed from
+/// positions carries rounding: a 30° leg must not read as 29.999999999°).
 ///
 /// ```
 /// use vorrt_colregs::{rules::is_readily_apparent, RuleParameters};
@@ -122,8 +124,12 @@ pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool
 #[inline]
 #[must_use]
 pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) -> bool {
-    course_change_rad.abs() >= parameters.apparent_turn_rad
+    course_change_rad.abs() >= parameters.apparent_turn_rad - ANGLE_ROUNDING_RAD
 }
+
+/// The rounding allowed when an angle computed from positions is compared
+/// with a threshold it should meet exactly, radians (about 6e-8 degrees).
+pub const ANGLE_ROUNDING_RAD: f64 = 1e-9;
 
 /// Whether a speed change from the reference speed (either way) is beyond
 /// [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps):

@@ -2,7 +2,7 @@
 //! over ground, ownship's path quality, and each target's encounter latched
 //! and assessed on the observed states.
 
-use super::observe::{OverGround, over_ground};
+use super::observe::{OverGround, over_ground_from};
 use super::quality::{PathQuality, path_quality};
 use super::{ObservedParameters, RecordedTrack, Recording};
 use crate::compliance::measure::closest_approach;
@@ -113,7 +113,7 @@ pub fn judge(
     recording.validate()?;
     let times_s = &recording.times_s;
     let window_s = parameters.window_s;
-    let ownship = over_ground(times_s, &recording.ownship.positions_m, window_s);
+    let ownship = observe(times_s, &recording.ownship, window_s);
     let own_states = observed_states(&recording.ownship, &ownship);
     let courses: Vec<f64> = match &recording.ownship.courses_rad {
         Some(courses) => courses.clone(),
@@ -139,7 +139,7 @@ pub fn judge(
         .targets
         .iter()
         .map(|track| {
-            let observed = over_ground(times_s, &track.positions_m, window_s);
+            let observed = observe(times_s, track, window_s);
             let states = observed_states(track, &observed);
             times_s
                 .iter()
@@ -164,6 +164,19 @@ pub fn judge(
         targets,
         compliant,
     })
+}
+
+/// The observed course and speed over ground of a track; with recorded
+/// courses, the vessel held its first course at its first step's speed
+/// before the start ([`over_ground_from`]).
+fn observe(times_s: &[f64], track: &RecordedTrack, window_s: f64) -> Vec<OverGround> {
+    let before_start_mps = match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
+        (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses
+            .first()
+            .map(|course| vorrt_geometry::angle::velocity(*course, p0.distance(*p1) / (t1 - t0))),
+        _ => None,
+    };
+    over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
 }
 
 /// The observed states of a track: recorded positions, observed course and

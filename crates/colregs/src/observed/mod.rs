@@ -12,8 +12,14 @@
 //! At each sample, course over ground (COG) is the direction of
 //! `p(t) - p(t - W)` and speed over ground (SOG) `|p(t) - p(t - W)| / W`,
 //! over the window `W` ([`window_s`](ObservedParameters::window_s), 60 s):
-//! positions interpolated linearly between samples; near the start the
-//! shortest available window ([`over_ground`]). A 30° heading held for one
+//! positions interpolated linearly between samples ([`over_ground`]). Near
+//! the start, where the window reaches back before the first sample: for a
+//! vessel whose recording gives courses, the vessel is taken to have held
+//! its first recorded course at its first step's speed before the start (a
+//! run starts in steady motion; [`over_ground_from`]), so the COG at the
+//! first samples is the course it was on, not a chord of a turn just begun;
+//! for a track of positions only, the shortest available window (at the
+//! first sample, the first step). A 30° heading held for one
 //! 16 s leg moves the COG by about 8°; a turn held for the whole window moves
 //! it fully. Every judgement of an encounter reads these observed states,
 //! never a planner's waypoint courses.
@@ -151,7 +157,7 @@ mod tests;
 
 pub use episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
-pub use observe::{OverGround, over_ground};
+pub use observe::{OverGround, over_ground, over_ground_from};
 pub use parameters::ObservedParameters;
 pub use quality::{PathQuality, path_quality};
 pub use recording::{RecordedTrack, Recording};

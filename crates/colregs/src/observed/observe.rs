@@ -29,7 +29,8 @@ const STILL_M: f64 = 1e-9;
 ///
 /// `times_s` must be increasing and as long as `positions_m` (the
 /// [`Recording`](super::Recording) checks this); extra entries of either are
-/// ignored.
+/// ignored. [`over_ground_from`] takes the velocity held before the first
+/// sample, where it is known, instead of shortening the window.
 ///
 /// ```
 /// use vorrt_colregs::observed::over_ground;
@@ -43,12 +44,47 @@ const STILL_M: f64 = 1e-9;
 /// ```
 #[must_use]
 pub fn over_ground(times_s: &[f64], positions_m: &[DVec2], window_s: f64) -> Vec<OverGround> {
+    over_ground_from(times_s, positions_m, window_s, None)
+}
+
+/// As [`over_ground`], for a vessel known to have held `before_start_mps`
+/// (a velocity over ground, m/s) before the first sample: a recorded run
+/// starts with every vessel in steady motion on its first course, so the
+/// window reaches back before the start along that velocity instead of
+/// shrinking (with `None`, as [`over_ground`]).
+///
+/// ```
+/// use vorrt_colregs::observed::over_ground_from;
+/// use glam::DVec2;
+/// // North at 5 m/s before the start, then turned east at once.
+/// let times = [0.0, 10.0, 20.0];
+/// let positions = [DVec2::ZERO, DVec2::new(50.0, 0.0), DVec2::new(100.0, 0.0)];
+/// let observed = over_ground_from(&times, &positions, 20.0, Some(DVec2::new(0.0, 5.0)));
+/// assert!(observed[0].course_rad.abs() < 1e-12);
+/// assert!((observed[1].course_rad.to_degrees() - 45.0).abs() < 1e-9);
+/// assert!((observed[2].course_rad.to_degrees() - 90.0).abs() < 1e-9);
+/// ```
+#[must_use]
+pub fn over_ground_from(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    window_s: f64,
+    before_start_mps: Option<DVec2>,
+) -> Vec<OverGround> {
     let count = times_s.len().min(positions_m.len());
     let (times_s, positions_m) = (&times_s[..count], &positions_m[..count]);
     let mut observed = Vec::with_capacity(count);
     let mut last_course = 0.0;
     for index in 0..count {
-        let (displacement, elapsed_s) = if index == 0 {
+        let (displacement, elapsed_s) = if let Some(velocity) = before_start_mps {
+            let from_s = times_s[index] - window_s;
+            let from_m = if from_s < times_s[0] {
+                positions_m[0] + velocity * (from_s - times_s[0])
+            } else {
+                position_at(times_s, positions_m, from_s, index)
+            };
+            (positions_m[index] - from_m, window_s)
+        } else if index == 0 {
             match (times_s.get(1), positions_m.get(1)) {
                 (Some(next_s), Some(next_m)) => (*next_m - positions_m[0], next_s - times_s[0]),
                 _ => (DVec2::ZERO, 0.0),
