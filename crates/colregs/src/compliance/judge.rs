@@ -9,7 +9,8 @@ use crate::latch::EncounterLatch;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    is_on_port_side, is_port_turn, is_readily_apparent, is_speed_change, is_stand_on_course_change,
+    is_measured_readily_apparent, is_on_port_side, is_port_turn, is_speed_change,
+    is_stand_on_course_change,
 };
 
 /// The findings and rule scores built up by the judgement steps.
@@ -83,7 +84,8 @@ impl Findings {
                     };
                     penalties.push(weights.late_action * lateness.clamp(0.0, 1.0).max(0.1));
                 }
-                let by_turn = if is_readily_apparent(measured.max_course_change_rad, rules) {
+                let by_turn = if is_measured_readily_apparent(measured.max_course_change_rad, rules)
+                {
                     1.0
                 } else {
                     measured.max_course_change_rad.abs() / rules.apparent_turn_rad

@@ -8,7 +8,9 @@ use crate::latch::{EncounterLatch, has_passed};
 use crate::observed::turn_episodes;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
-use crate::rules::{course_change_rad, in_contact, is_detectable_turn, is_readily_apparent};
+use crate::rules::{
+    course_change_rad, in_contact, is_detectable_turn, is_measured_readily_apparent,
+};
 use crate::vessel::VesselState;
 use glam::DVec2;
 use std::f64::consts::PI;
@@ -197,7 +199,7 @@ impl Measurements {
             .iter()
             .filter(|episode| {
                 is_detectable_turn(episode.change_rad, parameters)
-                    && !is_readily_apparent(episode.change_rad, parameters)
+                    && !is_measured_readily_apparent(episode.change_rad, parameters)
             })
             .count();
         Self {
@@ -240,7 +242,7 @@ fn eased_back(
 ) -> Option<EasedBack> {
     if let Some(reached) = before_cpa
         .iter()
-        .position(|s| is_readily_apparent(turn_of(latch, s), parameters))
+        .position(|s| is_measured_readily_apparent(turn_of(latch, s), parameters))
     {
         let side = turn_of(latch, &before_cpa[reached]).signum();
         let floor = parameters.apparent_turn_rad - parameters.turn_tolerance_rad;

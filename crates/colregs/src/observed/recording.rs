@@ -55,8 +55,11 @@ impl Recording {
     /// ```
     pub fn validate(&self) -> Result<(), ColregsError> {
         let invalid = |what: String| Err(ColregsError::InvalidRecording { what });
+        if let Some(index) = self.times_s.iter().position(|t| !t.is_finite()) {
+            return invalid(format!("times_s[{index}] is not a finite number"));
+        }
         for (index, pair) in self.times_s.windows(2).enumerate() {
-            if !(pair[1] > pair[0]) {
+            if pair[1] <= pair[0] {
                 return invalid(format!(
                     "times_s[{}] = {} does not follow times_s[{index}] = {}: times must be strictly increasing",
                     index + 1,
@@ -64,9 +67,6 @@ impl Recording {
                     pair[0]
                 ));
             }
-        }
-        if let Some(index) = self.times_s.iter().position(|t| !t.is_finite()) {
-            return invalid(format!("times_s[{index}] is not a finite number"));
         }
         let samples = self.times_s.len();
         for track in std::iter::once(&self.ownship).chain(&self.targets) {
