@@ -37,8 +37,12 @@ pub struct Report {
     pub min_distance_m: Option<f64>,
     /// Whether every target stayed at least `d_th_m` away.
     pub clearance_kept: bool,
-    /// Whether ownship obeyed COLREGs in every encounter.
+    /// Whether ownship obeyed COLREGs in every encounter, judged on the
+    /// track as observed: no finding (see `docs/evaluation.md`, "Judging the
+    /// track as observed").
     pub compliant: bool,
+    /// Ownship's path quality as sailed.
+    pub path_quality: PathQualityReport,
     /// `reached_goal && !collision && clearance_kept`: the run succeeded
     /// (exit code 0 of `vorrt simulate`).
     pub reached_goal_safely: bool,
@@ -58,6 +62,22 @@ pub struct Report {
     pub time_step_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetReport>,
+}
+
+/// Ownship's path quality as sailed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PathQualityReport {
+    /// The largest rate of turn between consecutive samples, degrees per second.
+    pub max_turn_rate_deg_s: f64,
+    /// Ownship's rate-of-turn limit, degrees per second (`null`: instantaneous turns).
+    pub turn_rate_limit_deg_s: Option<f64>,
+    /// Turn-direction reversals: successive turn episodes (each a detectable
+    /// change of more than 2°) turning opposite ways.
+    pub turn_reversals: usize,
+    /// Total course change per nautical mile sailed, degrees.
+    pub course_change_deg_per_nm: f64,
+    /// Findings about the track as a whole (a rate of turn above the limit).
+    pub findings: Vec<String>,
 }
 
 /// Planner calls of a run.
@@ -100,6 +120,18 @@ pub struct TargetReport {
     pub violations: Vec<String>,
     /// Overall score in `[0, 1]`: safety times every applicable rule score.
     pub score: f64,
+    /// The findings' names (`late_action`, `small_alterations`, ...), in the
+    /// order of `violations`.
+    pub findings: Vec<String>,
+    /// Range at which the give-way action began as observed, metres
+    /// (`null`: none, or not giving way).
+    pub action_range_m: Option<f64>,
+    /// First observed alteration (at the 5° detection threshold), degrees,
+    /// positive to starboard (`null`: none).
+    pub first_alteration_deg: Option<f64>,
+    /// Largest observed course change before the closest approach, degrees,
+    /// positive to starboard (`null`: no encounter).
+    pub max_alteration_deg: Option<f64>,
 }
 
 impl Report {
@@ -123,6 +155,13 @@ impl Report {
                 .then_some(evaluation.min_distance_m),
             clearance_kept: evaluation.clearance_kept,
             compliant: evaluation.compliant,
+            path_quality: PathQualityReport {
+                max_turn_rate_deg_s: evaluation.max_turn_rate_deg_s,
+                turn_rate_limit_deg_s: evaluation.turn_rate_limit_deg_s,
+                turn_reversals: evaluation.turn_reversals,
+                course_change_deg_per_nm: evaluation.course_change_deg_per_nm,
+                findings: evaluation.track_findings.clone(),
+            },
             reached_goal_safely,
             planning: PlanningReport {
                 plans_made: evaluation.plans_made,
@@ -157,6 +196,14 @@ impl TargetReport {
             compliant: target.compliant,
             violations: target.violations.clone(),
             score: target.score,
+            findings: target
+                .findings
+                .iter()
+                .map(|finding| finding.name().to_owned())
+                .collect(),
+            action_range_m: target.action_range_m,
+            first_alteration_deg: target.first_alteration_deg,
+            max_alteration_deg: target.max_alteration_deg,
         }
     }
 }

@@ -15,4 +15,11 @@ pub enum ColregsError {
         /// What the field accepts.
         expected: &'static str,
     },
+    /// A recording handed to the observed judgement
+    /// ([`observed::judge`](crate::observed::judge)) is malformed.
+    #[error("recording: {what}")]
+    InvalidRecording {
+        /// What is wrong, naming the vessel and the field.
+        what: String,
+    },
 }

@@ -15,6 +15,7 @@
 //! | [`latch`] | [`EncounterLatch`], [`update_latch`], [`has_passed`]: keep an encounter's type until the vessels have passed |
 //! | [`passing`] | [`passing_side`], [`crosses_ahead`]: how ownship passes a target |
 //! | [`rules`] | the rule book: the shared predicates ([`rules::may_act`], [`rules::giving_way_to_any`], [`rules::is_port_turn`], [`rules::is_readily_apparent`], [`rules::in_contact`], ...) every check and score calls; the one definition of collision (hull contact) |
+//! | [`observed`] | [`observed::judge`]: a recorded run judged as sailed and as observed (COG/SOG over a window, path quality, encounters assessed on the observed states) |
 //! | [`compliance`] | [`assess_encounter`]: post-hoc scoring of one recorded encounter (safety, rules 13-17), [`ScoringParameters`] |
 //! | [`maneuver`] | [`check_maneuver`]: whether a candidate velocity obeys rules 14-17 in an encounter in force; [`check_alteration`]: rule 16's readily apparent alteration |
 //! | [`error`] | [`ColregsError`] |
@@ -42,6 +43,7 @@ pub mod encounter;
 pub mod error;
 pub mod latch;
 pub mod maneuver;
+pub mod observed;
 pub mod parameters;
 pub mod passing;
 pub mod risk;

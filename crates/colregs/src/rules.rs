@@ -13,7 +13,7 @@
 //! | course change from the course held when the encounter began | [`course_change_rad`] | 8, 16, 17 |
 //! | a detectable turn (beyond the 2° tolerance) | [`is_detectable_turn`] | 16 |
 //! | a turn to port of the reference course | [`is_port_turn`] | 14(a), 15, 17(c) |
-//! | a readily apparent alteration (30°) | [`is_readily_apparent`] | 8(b), 16 |
+//! | a readily apparent alteration (30°) | [`is_readily_apparent`], measured: [`is_measured_readily_apparent`] | 8(b), 16 |
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
@@ -112,6 +112,8 @@ pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool
 /// Rules 8(b), 16: whether a course change (either way) is large enough to be
 /// readily apparent to another vessel: at least
 /// [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30° by default).
+/// A change measured from positions is judged with
+/// [`is_measured_readily_apparent`].
 ///
 /// ```
 /// use vorrt_colregs::{rules::is_readily_apparent, RuleParameters};
@@ -123,6 +125,27 @@ pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool
 #[must_use]
 pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) -> bool {
     course_change_rad.abs() >= parameters.apparent_turn_rad
+}
+
+/// The rounding allowed when an angle computed from positions is compared
+/// with a threshold it should meet exactly, radians (about 6e-8 degrees).
+pub const ANGLE_ROUNDING_RAD: f64 = 1e-9;
+
+/// [`is_readily_apparent`] for a course change measured after the fact
+/// (from observed courses over ground, computed from positions), allowing
+/// [`ANGLE_ROUNDING_RAD`] of rounding: a 30° leg must not read as a
+/// 29.999999999° one.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_measured_readily_apparent, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(is_measured_readily_apparent(params.apparent_turn_rad - 1e-12, &params));
+/// assert!(!is_measured_readily_apparent(29f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_measured_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) -> bool {
+    is_readily_apparent(course_change_rad.abs() + ANGLE_ROUNDING_RAD, parameters)
 }
 
 /// Whether a speed change from the reference speed (either way) is beyond

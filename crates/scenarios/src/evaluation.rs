@@ -1,27 +1,39 @@
 //! Evaluation of a closed-loop run: did ownship arrive, how close did every
-//! target come, and did it obey COLREGs?
+//! target come, did it obey COLREGs, and how seamanlike was its track?
 //!
-//! Per target, the encounter is latched from the recorded states exactly as
-//! the simulation latched it (`vorrt_colregs::first_latch`) and scored by
-//! `vorrt_colregs::assess_encounter`: minimum distance and when, the action
-//! taken (starboard turn, passing side, pass astern, stand-on kept) with every
-//! violation named, and per-rule scores after Woerner (2019) and Minne (2017).
-//! A target with which no risk of collision ever arose is judged on clearance
-//! alone.
+//! The run is judged **as sailed and as observed**, by the one judgement of
+//! recorded tracks, `vorrt_colregs::observed::judge`: every vessel's course
+//! and speed over ground observed over a 60 s window (as another vessel's
+//! radar or AIS shows them), ownship's path quality (largest rate of turn,
+//! turn-direction reversals, course change per nautical mile), and per
+//! target the encounter latched on the observed states and assessed with
+//! the published evaluators' criteria (Woerner 2019, Minne 2017, the NTNU
+//! evaluator): action begun, early, readily apparent, first alteration to
+//! starboard, held until the closest approach, no succession of small
+//! alterations (rule 8(b)), stand-on kept (rule 17), with every finding named
+//! and per-rule scores. A target with which no risk of collision ever arose
+//! is judged on clearance alone. Definitions and parameters are in
+//! `docs/evaluation.md`, "Judging the track as observed".
+//!
+//! The clearance d_th and the rule constants are those the run was made
+//! with (`SimulationRecord::config`), and the rate-of-turn limit is the one
+//! ownship sailed under (`SimulationRecord::max_turn_rate_rad_s`).
 //!
 //! Several targets at once: a vessel that must give way to one target cannot
 //! also keep its course for another. While ownship has to give way to some
-//! target, its stand-on encounters are judged as ones in which it may act (rule 17(a)(ii); `vorrt_colregs::assess_encounter_acting`):
-//! an early course or speed change is not held against it, a port turn for a
-//! vessel on its port side still is (rule 17(c)). The planner applies the same
-//! reading (`vorrt_colregs::check_maneuver_acting`).
+//! target, its stand-on encounters are judged as ones in which it may act
+//! (rule 17(a)(ii)): an early course or speed change is not held against it,
+//! a port turn for a vessel on its port side still is (rule 17(c)). The
+//! planner applies the same reading (`vorrt_colregs::check_maneuver_acting`).
 
 use crate::scenario::Scenario;
 use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::observed::{
+    ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack, Recording, judge,
+};
 use vorrt_colregs::{
-    ComplianceViolation, Encounter, EncounterAssessment, EncounterSample, Role, RuleParameters,
-    ScoringParameters, assess_encounter_acting, first_latch, safety_score, update_latch,
+    ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
 };
 
 /// How ownship fared against one target.
@@ -45,11 +57,25 @@ pub struct TargetEvaluation {
     pub collision: bool,
     /// Whether ownship's action obeyed every rule that applied.
     pub compliant: bool,
-    /// Every rule broken (and clearance findings), as text naming the rule.
+    /// Every finding under the observed evaluation (rules broken, and the
+    /// clearance findings), as text naming the rule.
     pub violations: Vec<String>,
+    /// The same findings, typed.
+    pub findings: Vec<ComplianceViolation>,
+    /// Range at which ownship's give-way action began as observed, metres
+    /// (`None`: no action, or not giving way).
+    pub action_range_m: Option<f64>,
+    /// The first observed alteration (the course change at the first sample
+    /// at or beyond the 5° detection threshold), degrees, positive to
+    /// starboard.
+    pub first_alteration_deg: Option<f64>,
+    /// The largest observed course change from the reference course before
+    /// the closest approach, degrees, positive to starboard.
+    pub max_alteration_deg: Option<f64>,
     /// The overall score in `[0, 1]`: safety times every applicable rule score.
     pub score: f64,
-    /// The full assessment (`None` when no encounter arose).
+    /// The full assessment on the observed states (`None` when no
+    /// encounter arose).
     pub assessment: Option<EncounterAssessment>,
 }
 
@@ -70,8 +96,23 @@ pub struct Evaluation {
     pub min_distance_m: f64,
     /// Whether every target kept `d_th`.
     pub clearance_kept: bool,
-    /// Whether every encounter was handled compliantly.
+    /// No finding under the observed evaluation: no rule broken in any
+    /// encounter and no track finding.
     pub compliant: bool,
+    /// Ownship's largest rate of turn, degrees per second (from the sailed
+    /// course between consecutive samples).
+    pub max_turn_rate_deg_s: f64,
+    /// Ownship's rate-of-turn limit, degrees per second (`None`: the
+    /// paper's instantaneous turns).
+    pub turn_rate_limit_deg_s: Option<f64>,
+    /// Ownship's turn-direction reversals (successive turn episodes of at
+    /// least the detectable 2° turning opposite ways).
+    pub turn_reversals: usize,
+    /// Ownship's total course change per nautical mile sailed, degrees.
+    pub course_change_deg_per_nm: f64,
+    /// Findings about ownship's track as a whole (a rate of turn above the
+    /// limit), or why the run could not be judged.
+    pub track_findings: Vec<String>,
     /// Length of the sailed track, metres.
     pub path_length_m: f64,
     /// Straight-line distance from start to goal, metres.
@@ -146,6 +187,20 @@ impl Evaluation {
             self.failed_plans,
             self.planning_time_s * 1e3,
         );
+        let _ = writeln!(
+            text,
+            "path quality: largest rate of turn {:.2}°/s{} | {} turn reversals | {:.1}° of course change per nm{}",
+            self.max_turn_rate_deg_s,
+            self.turn_rate_limit_deg_s
+                .map_or_else(String::new, |limit| format!(" (limit {limit:.2}°/s)")),
+            self.turn_reversals,
+            self.course_change_deg_per_nm,
+            if self.track_findings.is_empty() {
+                String::new()
+            } else {
+                format!(" | {}", self.track_findings.join("; "))
+            },
+        );
         text
     }
 }
@@ -163,7 +218,8 @@ pub fn scoring_for(clearance_m: f64) -> ScoringParameters {
     }
 }
 
-/// Evaluates a run of `scenario`.
+/// Evaluates a run of `scenario`, judged as observed with the clearance and
+/// rules the run was made with (`record.config`).
 ///
 /// ```
 /// use vorrt_scenarios::{Scenario, evaluate, simulate};
@@ -175,8 +231,12 @@ pub fn scoring_for(clearance_m: f64) -> ScoringParameters {
 /// ```
 #[must_use]
 pub fn evaluate(scenario: &Scenario, record: &SimulationRecord) -> Evaluation {
-    let config = scenario.planner_config().unwrap_or_default();
-    evaluate_with(scenario, record, &config.rules, config.clearance_m)
+    evaluate_with(
+        scenario,
+        record,
+        &record.config.rules,
+        record.config.clearance_m,
+    )
 }
 
 /// As [`evaluate`], with the rule constants and clearance given by the caller.
@@ -187,38 +247,31 @@ pub fn evaluate_with(
     rules: &RuleParameters,
     clearance_m: f64,
 ) -> Evaluation {
-    let scoring = scoring_for(clearance_m);
-    let samples: Vec<Vec<EncounterSample>> = record
-        .targets
-        .iter()
-        .map(|track| {
-            record
-                .times_s
+    let parameters = ObservedParameters {
+        max_turn_rate_rad_s: record.max_turn_rate_rad_s,
+        rules: *rules,
+        scoring: scoring_for(clearance_m),
+        ..ObservedParameters::default()
+    };
+    let judgement = judge(&recording_of(scenario, record), &parameters);
+    let (targets, path, track_findings, compliant) = match &judgement {
+        Ok(judgement) => (
+            judgement.targets.iter().map(target_evaluation).collect(),
+            Some(judgement.path),
+            judgement
+                .track_findings
                 .iter()
-                .zip(&record.ownship)
-                .zip(track)
-                .map(|((time_s, own), target)| EncounterSample::new(*time_s, *own, *target))
-                .collect()
-        })
-        .collect();
-    // At each sample, whether ownship had to give way to some target: while
-    // it does, it may act for the vessels it stands on for.
-    let mut giving_way = vec![false; record.times_s.len()];
-    for track in &samples {
-        let mut latch = None;
-        for (sample, giving) in track.iter().zip(giving_way.iter_mut()) {
-            latch = update_latch(latch, &sample.own, &sample.target, sample.time_s, rules);
-            *giving |= latch.is_some_and(|latch| latch.encounter.role() == Role::GiveWay);
-        }
-    }
-    let targets: Vec<TargetEvaluation> = samples
-        .iter()
-        .enumerate()
-        .map(|(index, track)| {
-            let name = record.target_names.get(index).cloned().unwrap_or_default();
-            evaluate_target(name, track, rules, &scoring, &giving_way)
-        })
-        .collect();
+                .map(ToString::to_string)
+                .collect(),
+            judgement.compliant,
+        ),
+        Err(error) => (
+            Vec::new(),
+            None,
+            vec![format!("not judged: {error}")],
+            false,
+        ),
+    };
     let start = scenario.ownship_state().position_m;
     let straight_length_m = start.distance(scenario.ownship_goal_m());
     let speed = scenario.ownship_state().speed_mps;
@@ -239,13 +292,20 @@ pub fn evaluate_with(
         seed: record.seed,
         clearance_m,
         reached_goal: record.reached_goal,
-        collision: targets.iter().any(|target| target.collision),
+        collision: targets
+            .iter()
+            .any(|target: &TargetEvaluation| target.collision),
         min_distance_m: targets
             .iter()
             .map(|target| target.min_distance_m)
             .fold(f64::INFINITY, f64::min),
         clearance_kept: targets.iter().all(|target| target.clearance_kept),
-        compliant: targets.iter().all(|target| target.compliant),
+        compliant,
+        max_turn_rate_deg_s: path.map_or(0.0, |path| path.max_turn_rate_deg_s),
+        turn_rate_limit_deg_s: record.max_turn_rate_rad_s.map(f64::to_degrees),
+        turn_reversals: path.map_or(0, |path| path.turn_reversals),
+        course_change_deg_per_nm: path.map_or(0.0, |path| path.course_change_deg_per_nm),
+        track_findings,
         path_length_m,
         straight_length_m,
         path_overhead_pct: percent(path_length_m, straight_length_m),
@@ -260,65 +320,73 @@ pub fn evaluate_with(
     }
 }
 
-fn evaluate_target(
-    name: String,
-    samples: &[EncounterSample],
-    rules: &RuleParameters,
-    scoring: &ScoringParameters,
-    giving_way: &[bool],
-) -> TargetEvaluation {
-    let hull_contact_m = samples.first().map_or(0.0, |sample| {
-        0.5 * (sample.own.length_m + sample.target.length_m)
-    });
-    match first_latch(samples, rules) {
-        Some(latch) => {
-            let assessment = assess_encounter_acting(samples, &latch, rules, scoring, giving_way);
-            TargetEvaluation {
-                name,
-                encounter: assessment.encounter,
-                role: assessment.role,
-                risk_time_s: Some(latch.latched_at_s),
-                min_distance_m: assessment.min_distance_m,
-                time_of_min_s: assessment.time_of_min_s,
-                clearance_kept: assessment.min_distance_m >= scoring.clearance_m,
-                collision: assessment.min_distance_m < hull_contact_m,
-                compliant: assessment.compliant,
-                violations: assessment
-                    .violations
-                    .iter()
-                    .map(ComplianceViolation::to_string)
-                    .collect(),
-                score: assessment.scores.overall,
-                assessment: Some(assessment),
-            }
-        }
-        None => {
-            let (min_distance_m, time_of_min_s) = samples
-                .iter()
-                .map(|sample| (sample.range_m(), sample.time_s))
-                .fold((f64::INFINITY, 0.0), |best, next| {
-                    if next.0 < best.0 { next } else { best }
-                });
-            let clearance_kept = min_distance_m >= scoring.clearance_m;
-            let violations = if clearance_kept {
-                Vec::new()
-            } else {
-                vec![ComplianceViolation::ClearanceViolated { min_distance_m }.to_string()]
-            };
-            TargetEvaluation {
-                name,
-                encounter: Encounter::None,
-                role: Role::None,
-                risk_time_s: None,
-                min_distance_m,
-                time_of_min_s,
-                clearance_kept,
-                collision: min_distance_m < hull_contact_m,
-                compliant: true,
-                violations,
-                score: safety_score(min_distance_m, scoring),
-                assessment: None,
-            }
-        }
+/// The observed judgement of a run, for callers that want more than the
+/// [`Evaluation`] (every observed course and speed, the assessments).
+///
+/// # Errors
+/// The judgement's error when the rules or the record are malformed.
+pub fn observed_judgement(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+) -> Result<ObservedJudgement, vorrt_colregs::ColregsError> {
+    let parameters = ObservedParameters {
+        max_turn_rate_rad_s: record.max_turn_rate_rad_s,
+        rules: record.config.rules,
+        scoring: scoring_for(record.config.clearance_m),
+        ..ObservedParameters::default()
+    };
+    judge(&recording_of(scenario, record), &parameters)
+}
+
+/// The recorded tracks of a run, as the observed judgement reads them:
+/// positions and recorded courses of every vessel on the run's time base.
+fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
+    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64| RecordedTrack {
+        name: name.to_owned(),
+        length_m: states.first().map_or(length_m, |state| state.length_m),
+        positions_m: states.iter().map(|state| state.position_m).collect(),
+        courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+    };
+    Recording {
+        times_s: record.times_s.clone(),
+        ownship: track(
+            &scenario.ownship.name,
+            &record.ownship,
+            scenario.ownship.length_m,
+        ),
+        targets: record
+            .targets
+            .iter()
+            .enumerate()
+            .map(|(index, states)| {
+                let name = record.target_names.get(index).map_or("", String::as_str);
+                let length_m = scenario.targets.get(index).map_or(1.0, |t| t.length_m);
+                track(name, states, length_m)
+            })
+            .collect(),
+    }
+}
+
+/// One target's evaluation from its observed judgement.
+fn target_evaluation(observed: &ObservedEncounter) -> TargetEvaluation {
+    let assessment = observed.assessment.as_ref();
+    let latch = observed.latch;
+    TargetEvaluation {
+        name: observed.name.clone(),
+        encounter: latch.map_or(Encounter::None, |latch| latch.encounter),
+        role: latch.map_or(Role::None, |latch| latch.encounter.role()),
+        risk_time_s: latch.map(|latch| latch.latched_at_s),
+        min_distance_m: observed.min_distance_m,
+        time_of_min_s: observed.time_of_min_s,
+        clearance_kept: observed.clearance_kept,
+        collision: observed.collision,
+        compliant: observed.compliant,
+        violations: observed.findings.iter().map(ToString::to_string).collect(),
+        findings: observed.findings.clone(),
+        action_range_m: assessment.and_then(|a| a.action_range_m),
+        first_alteration_deg: assessment.and_then(|a| a.first_turn_rad.map(f64::to_degrees)),
+        max_alteration_deg: assessment.map(|a| a.max_course_change_rad.to_degrees()),
+        score: observed.score,
+        assessment: assessment.cloned(),
     }
 }

@@ -58,7 +58,9 @@ pub mod validate;
 
 pub use batch::{BatchError, BatchItem, BatchRow, BatchSummary, Shard, run_batch};
 pub use error::ScenarioError;
-pub use evaluation::{Evaluation, TargetEvaluation, evaluate, evaluate_with, scoring_for};
+pub use evaluation::{
+    Evaluation, TargetEvaluation, evaluate, evaluate_with, observed_judgement, scoring_for,
+};
 pub use generator::{
     EncounterMix, GeneratorError, GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection,
     TssSpec,

@@ -77,6 +77,10 @@ pub struct EncounterAssessment {
     /// The first course change beyond the turn tolerance while in force,
     /// signed: positive to starboard.
     pub first_turn_rad: Option<f64>,
+    /// Alteration episodes while in force that were detectable (2°) but not
+    /// readily apparent (30°): two or more are a succession of small
+    /// alterations (rule 8(b)).
+    pub small_alterations: usize,
     /// Side of ownship on which the target lay at the closest approach
     /// (relative bearing from ownship's course in `(0, π)` = starboard);
     /// `None` at zero range or dead ahead / astern.

@@ -2,13 +2,16 @@
 //! findings and setting the scores of the rules it judges (see the violation
 //! list in the [module documentation](super)).
 
-use super::measure::{Measurements, largest_signed, speed_change_of, turn_of};
+use super::measure::{EasedBack, Measurements, largest_signed, speed_change_of, turn_of};
 use super::{ComplianceViolation, EncounterSample, ScoringParameters};
 use crate::encounter::Encounter;
 use crate::latch::EncounterLatch;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
-use crate::rules::{is_on_port_side, is_port_turn, is_speed_change, is_stand_on_course_change};
+use crate::rules::{
+    is_measured_readily_apparent, is_on_port_side, is_port_turn, is_speed_change,
+    is_stand_on_course_change,
+};
 
 /// The findings and rule scores built up by the judgement steps.
 #[derive(Debug, Default)]
@@ -50,8 +53,9 @@ impl Findings {
         }
     }
 
-    /// Rule 16 (with 8(b)): a give-way vessel's action was needed and taken,
-    /// early and readily apparent.
+    /// Rule 16 (with 8): a give-way vessel's action was taken, early,
+    /// readily apparent and held until the closest approach, and not as a
+    /// succession of small alterations.
     pub(super) fn judge_give_way_action(
         &mut self,
         measured: &Measurements,
@@ -63,14 +67,29 @@ impl Findings {
         let mut penalties = Vec::new();
         match (measured.action_time_s, measured.action_range_m) {
             (Some(action_time_s), Some(range_m)) => {
-                let prompt = action_time_s - latch.latched_at_s <= scoring.reaction_time_s;
-                if range_m < scoring.late_action_range_m && !prompt {
+                let early_range_m = scoring.late_action_range_m;
+                let late = match measured.latch_range_m {
+                    Some(latch_range_m) if latch_range_m >= early_range_m => {
+                        range_m < early_range_m
+                    }
+                    _ => action_time_s - latch.latched_at_s > scoring.reaction_time_s,
+                };
+                if late {
                     self.violations
                         .push(ComplianceViolation::LateAction { range_m });
-                    let lateness = 1.0 - range_m / scoring.late_action_range_m;
-                    penalties.push(weights.late_action * lateness.clamp(0.0, 1.0));
+                    let lateness = if early_range_m > 0.0 {
+                        1.0 - range_m / early_range_m
+                    } else {
+                        0.0
+                    };
+                    penalties.push(weights.late_action * lateness.clamp(0.0, 1.0).max(0.1));
                 }
-                let by_turn = measured.max_course_change_rad.abs() / rules.apparent_turn_rad;
+                let by_turn = if is_measured_readily_apparent(measured.max_course_change_rad, rules)
+                {
+                    1.0
+                } else {
+                    measured.max_course_change_rad.abs() / rules.apparent_turn_rad
+                };
                 let apparent_reduction_mps =
                     scoring.apparent_speed_reduction_fraction * latch.reference_speed_mps;
                 let by_speed = if apparent_reduction_mps > 0.0 {
@@ -87,17 +106,32 @@ impl Findings {
                         });
                     penalties.push(weights.not_apparent * (1.0 - apparentness).clamp(0.0, 1.0));
                 }
-            }
-            _ => {
-                let needed = measured.min_distance_m < scoring.clearance_m
-                    || measured
-                        .latch_cpa_m
-                        .is_some_and(|cpa| cpa < scoring.clearance_m);
-                if needed {
-                    self.violations.push(ComplianceViolation::NoAction);
-                    penalties.push(weights.no_action);
+                if let Some(eased) = measured.eased_back {
+                    let (course_change_rad, speed_change_mps) = match eased {
+                        EasedBack::Course(change) => (change, 0.0),
+                        EasedBack::Speed(change) => (0.0, change),
+                    };
+                    self.violations
+                        .push(ComplianceViolation::AlterationNotHeld {
+                            course_change_rad,
+                            speed_change_mps,
+                        });
+                    penalties.push(weights.not_held);
                 }
             }
+            // Risk of collision was latched (rule 7) and the encounter was in
+            // force: a give-way vessel acts, however wide the predicted pass.
+            _ if measured.latch_range_m.is_some() => {
+                self.violations.push(ComplianceViolation::NoAction);
+                penalties.push(weights.no_action);
+            }
+            _ => {}
+        }
+        if measured.small_alterations >= 2 {
+            self.violations.push(ComplianceViolation::SmallAlterations {
+                episodes: measured.small_alterations,
+            });
+            penalties.push(weights.small_alterations);
         }
         self.rule_16 = Some(rule_score(&penalties));
     }

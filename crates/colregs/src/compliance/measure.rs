@@ -3,11 +3,14 @@
 //! force, and the action taken in it (see the measurement list in the
 //! [module documentation](super)).
 
-use super::EncounterSample;
+use super::{EncounterSample, ScoringParameters};
 use crate::latch::{EncounterLatch, has_passed};
+use crate::observed::turn_episodes;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
-use crate::rules::{course_change_rad, in_contact, is_detectable_turn, is_speed_change};
+use crate::rules::{
+    course_change_rad, in_contact, is_detectable_turn, is_measured_readily_apparent,
+};
 use crate::vessel::VesselState;
 use glam::DVec2;
 use std::f64::consts::PI;
@@ -105,17 +108,52 @@ pub(super) struct Measurements {
     pub(super) action_time_s: Option<f64>,
     /// Range when the action began.
     pub(super) action_range_m: Option<f64>,
-    /// The first detectable course change while in force.
+    /// The first course change of at least the action detection threshold
+    /// while in force.
     pub(super) first_turn_rad: Option<f64>,
-    /// The largest course change while in force, signed.
+    /// The largest course change while in force up to the closest approach,
+    /// signed.
     pub(super) max_course_change_rad: f64,
-    /// The largest speed change while in force, signed.
+    /// The largest speed change while in force up to the closest approach,
+    /// signed.
     pub(super) max_speed_change_mps: f64,
-    /// The largest speed reduction while in force, m/s (0 for none).
+    /// The largest speed reduction while in force up to the closest
+    /// approach, m/s (0 for none).
     pub(super) max_speed_reduction_mps: f64,
+    /// Alteration episodes while in force that were detectable but not
+    /// readily apparent (rule 8(b)).
+    pub(super) small_alterations: usize,
+    /// The course change (or, for an alteration of speed, the speed change)
+    /// a readily apparent alteration was eased back to before the closest
+    /// approach; `None` if held.
+    pub(super) eased_back: Option<EasedBack>,
     /// The smallest distance ahead of the target's bow at which ownship
     /// crossed its heading line while in force.
     pub(super) crossed_ahead_distance_m: Option<f64>,
+}
+
+/// How a readily apparent alteration was eased back before the closest
+/// approach.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum EasedBack {
+    /// The course change eased back to, radians.
+    Course(f64),
+    /// The speed change eased back to, m/s.
+    Speed(f64),
+}
+
+/// Whether a sample shows that the give-way action has begun: the course
+/// differs from the reference by at least `action_detection_rad`, or the
+/// speed has dropped by at least `action_speed_drop_fraction` of the
+/// reference speed.
+fn action_begun(
+    latch: &EncounterLatch,
+    sample: &EncounterSample,
+    scoring: &ScoringParameters,
+) -> bool {
+    turn_of(latch, sample).abs() >= scoring.action_detection_rad
+        || -speed_change_of(latch, sample)
+            >= scoring.action_speed_drop_fraction * latch.reference_speed_mps
 }
 
 impl Measurements {
@@ -125,6 +163,7 @@ impl Measurements {
         window: &InForce,
         latch: &EncounterLatch,
         parameters: &RuleParameters,
+        scoring: &ScoringParameters,
     ) -> Self {
         let (min_distance_m, time_of_min_s, in_contact, passing_side) =
             match closest_approach(samples) {
@@ -146,14 +185,23 @@ impl Measurements {
             )
             .distance_m
         });
-        let action = in_force.iter().find(|s| {
-            is_detectable_turn(turn_of(latch, s), parameters)
-                || is_speed_change(speed_change_of(latch, s), parameters)
-        });
+        let action = in_force.iter().find(|s| action_begun(latch, s, scoring));
         let first_turn_rad = in_force
             .iter()
             .map(|s| turn_of(latch, s))
-            .find(|turn| is_detectable_turn(*turn, parameters));
+            .find(|turn| turn.abs() >= scoring.action_detection_rad);
+        let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
+        let before_cpa = &in_force[..before_cpa_count];
+        let courses: Vec<f64> = std::iter::once(latch.reference_course_rad)
+            .chain(in_force.iter().map(|s| s.own.course_rad))
+            .collect();
+        let small_alterations = turn_episodes(&courses, parameters)
+            .iter()
+            .filter(|episode| {
+                is_detectable_turn(episode.change_rad, parameters)
+                    && !is_measured_readily_apparent(episode.change_rad, parameters)
+            })
+            .count();
         Self {
             min_distance_m,
             time_of_min_s,
@@ -164,22 +212,61 @@ impl Measurements {
             action_time_s: action.map(|s| s.time_s),
             action_range_m: action.map(EncounterSample::range_m),
             first_turn_rad,
-            max_course_change_rad: largest_signed(in_force.iter().map(|s| turn_of(latch, s))),
+            max_course_change_rad: largest_signed(before_cpa.iter().map(|s| turn_of(latch, s))),
             max_speed_change_mps: largest_signed(
-                in_force.iter().map(|s| speed_change_of(latch, s)),
+                before_cpa.iter().map(|s| speed_change_of(latch, s)),
             ),
-            max_speed_reduction_mps: in_force
+            max_speed_reduction_mps: before_cpa
                 .iter()
                 .map(|s| -speed_change_of(latch, s))
                 .fold(0.0, f64::max),
+            small_alterations,
+            eased_back: eased_back(before_cpa, latch, parameters, scoring),
             crossed_ahead_distance_m: crossing_ahead_distance(window.segments(samples)),
         }
     }
 }
 
+/// Whether a readily apparent alteration, once reached, was eased back
+/// before the closest approach (`before_cpa`: the in-force samples up to
+/// it). A course alteration is eased back when the course change in its
+/// direction falls more than the turn tolerance (2°, not detectable) below
+/// the readily apparent one; a speed alteration when the speed reduction
+/// falls more than the stand-on speed tolerance below the readily apparent
+/// reduction.
+fn eased_back(
+    before_cpa: &[EncounterSample],
+    latch: &EncounterLatch,
+    parameters: &RuleParameters,
+    scoring: &ScoringParameters,
+) -> Option<EasedBack> {
+    if let Some(reached) = before_cpa
+        .iter()
+        .position(|s| is_measured_readily_apparent(turn_of(latch, s), parameters))
+    {
+        let side = turn_of(latch, &before_cpa[reached]).signum();
+        let floor = parameters.apparent_turn_rad - parameters.turn_tolerance_rad;
+        return before_cpa[reached..]
+            .iter()
+            .map(|s| turn_of(latch, s))
+            .find(|turn| side * turn < floor)
+            .map(EasedBack::Course);
+    }
+    let apparent_reduction_mps =
+        scoring.apparent_speed_reduction_fraction * latch.reference_speed_mps;
+    let reached = before_cpa
+        .iter()
+        .position(|s| -speed_change_of(latch, s) >= apparent_reduction_mps)?;
+    before_cpa[reached..]
+        .iter()
+        .map(|s| speed_change_of(latch, s))
+        .find(|change| -change < apparent_reduction_mps - parameters.stand_on_speed_tolerance_mps)
+        .map(EasedBack::Speed)
+}
+
 /// The closest approach over the run: (distance, time, index of the sample
 /// that starts the step holding it).
-pub(super) fn closest_approach(samples: &[EncounterSample]) -> Option<(f64, f64, usize)> {
+pub(crate) fn closest_approach(samples: &[EncounterSample]) -> Option<(f64, f64, usize)> {
     let first = samples.first()?;
     let mut best = (first.range_m(), first.time_s, 0);
     for (index, pair) in samples.windows(2).enumerate() {

@@ -1,5 +1,9 @@
 //! Post-hoc compliance scoring of one recorded encounter (rules 8, 13-17).
 //!
+//! The run's evaluation feeds it the states **as observed** (course and
+//! speed over ground over a window, [`crate::observed`]); it judges whatever
+//! states it is given.
+//!
 //! Given the recorded tracks of ownship and one target
 //! ([`EncounterSample`]s in increasing time, covering the whole run) and the
 //! [`EncounterLatch`] fixed when risk of collision arose, [`assess_encounter`]
@@ -25,10 +29,18 @@
 //!   including) the first sample at which the vessels have passed
 //!   ([`has_passed`](crate::has_passed)), or to the end of the run.
 //! - **Action**: the first in-force sample at which ownship's course differs
-//!   from the latch's reference course by more than
-//!   [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) or its speed
-//!   from the reference speed by more than
-//!   [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps).
+//!   from the latch's reference course by at least
+//!   [`action_detection_rad`](ScoringParameters::action_detection_rad) (5°)
+//!   or its speed has dropped by at least
+//!   [`action_speed_drop_fraction`](ScoringParameters::action_speed_drop_fraction)
+//!   (20 %) of the reference speed. The first turn is the course change at
+//!   the first sample at or beyond the detection threshold.
+//! - **Up to the closest approach**: the largest course and speed changes
+//!   (readily apparent, held) are measured over the in-force samples up to
+//!   the time of the minimum range.
+//! - **Alteration episodes**: the turn episodes of ownship's course while in
+//!   force, from the reference course
+//!   ([`turn_episodes`](crate::observed::turn_episodes)).
 //! - **Passing side**: the side of ownship (relative bearing from ownship's
 //!   course in `(0, π)` = starboard) on which the target lies at the closest
 //!   approach.
@@ -45,24 +57,28 @@
 //!   violations: they do not make an assessment non-compliant.
 //! - Give way (head-on, crossing give-way, overtaking; rule 16, with rule 8(b)
 //!   for "readily apparent"):
-//!   - [`NoAction`](ComplianceViolation::NoAction): no action while in force,
-//!     **and** action was needed: the CPA predicted at the latch instant (both
-//!     vessels holding their velocities) or the actual minimum range was under
-//!     `clearance_m`. A risk latched at, say, 1500 m of predicted CPA with a
-//!     200 m clearance needed no manoeuvre, so holding course there is not
-//!     penalised (the latch's risk threshold is a planner trigger, wider than
-//!     the clearance that scoring judges). The manner of passing
-//!     (port turn, starboard-to-starboard, crossing ahead) is judged whether
-//!     or not action was needed: rules 14(a) and 15 prescribe it.
-//!   - [`LateAction`](ComplianceViolation::LateAction): the action began with
-//!     the range already under `late_action_range_m`, unless it began within
-//!     `reaction_time_s` of the latch (risk that arises at close range cannot
-//!     be met earlier).
-//!   - [`ActionNotApparent`](ComplianceViolation::ActionNotApparent): the
-//!     largest course change while in force is under
+//!   - [`NoAction`](ComplianceViolation::NoAction): no action while in
+//!     force. Risk of collision was latched, so a give-way vessel acts
+//!     however wide the predicted pass (the published evaluators judge it
+//!     so); the manner of passing (port turn, starboard-to-starboard,
+//!     crossing ahead) is judged as well.
+//!   - [`LateAction`](ComplianceViolation::LateAction): where risk arose at
+//!     or beyond `late_action_range_m` (2 nm), the action began nearer;
+//!     where it arose nearer, the action began more than `reaction_time_s`
+//!     (60 s) after the latch.
+//!   - [`ActionNotApparent`](ComplianceViolation::ActionNotApparent): up to
+//!     the closest approach, the largest course change is under
 //!     [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30°) and the
-//!     largest speed reduction is under `apparent_speed_reduction_fraction` of
+//!     largest speed reduction under `apparent_speed_reduction_fraction` of
 //!     the reference speed (one half).
+//!   - [`AlterationNotHeld`](ComplianceViolation::AlterationNotHeld) (rules
+//!     8(d), 16): once readily apparent, the course change eased back more
+//!     than [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) below
+//!     it (a speed reduction more than the stand-on speed tolerance below
+//!     it) before the closest approach.
+//!   - [`SmallAlterations`](ComplianceViolation::SmallAlterations) (rule
+//!     8(b)): two or more alteration episodes while in force, each
+//!     detectable and not readily apparent.
 //!   - [`PortTurn`](ComplianceViolation::PortTurn) (head-on, rule 14(a);
 //!     crossing give-way, rules 15 and 16): the first detectable course change
 //!     is to port, or the largest one is.
@@ -103,7 +119,7 @@
 
 mod assessment;
 mod judge;
-mod measure;
+pub(crate) mod measure;
 mod recording;
 mod scoring;
 #[cfg(test)]
@@ -180,7 +196,7 @@ pub fn assess_encounter_acting(
     giving_way: &[bool],
 ) -> EncounterAssessment {
     let window = InForce::of(samples, latch, rules);
-    let measured = Measurements::of(samples, &window, latch, rules);
+    let measured = Measurements::of(samples, &window, latch, rules, scoring);
     let mut findings = Findings::safety(&measured, scoring);
     match latch.encounter.role() {
         Role::GiveWay => {
@@ -257,6 +273,7 @@ fn assemble(
         max_course_change_rad: measured.max_course_change_rad,
         max_speed_change_mps: measured.max_speed_change_mps,
         first_turn_rad: measured.first_turn_rad,
+        small_alterations: measured.small_alterations,
         passing_side: measured.passing_side,
         crossed_ahead: measured.crossed_ahead_distance_m.is_some(),
         crossed_ahead_distance_m: measured.crossed_ahead_distance_m,

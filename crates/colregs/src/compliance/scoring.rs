@@ -36,6 +36,11 @@ pub struct PenaltyWeights {
     /// Rule 17(c): a stand-on vessel that turned to port for a vessel on its
     /// own port side. Default 0.5.
     pub stand_on_port_turn: f64,
+    /// Rule 8(b): a succession of small alterations. Default 0.5.
+    pub small_alterations: f64,
+    /// Rules 8(d), 16: a give-way alteration eased back before the closest
+    /// approach. Default 0.5.
+    pub not_held: f64,
 }
 
 impl Default for PenaltyWeights {
@@ -50,6 +55,8 @@ impl Default for PenaltyWeights {
             stand_on_course_change: 0.5,
             stand_on_speed_change: 0.5,
             stand_on_port_turn: 0.5,
+            small_alterations: 0.5,
+            not_held: 0.5,
         }
     }
 }
@@ -73,12 +80,26 @@ pub struct ScoringParameters {
     pub collision_m: f64,
     /// Safety score at the near-miss range, in `[0, 1]`. Default 0.5.
     pub near_miss_safety: f64,
-    /// An action begun with the range already under this is late (rule 16:
-    /// "early"). Default 1 nm (1852 m).
+    /// Early-action range (rules 8(a), 16: "early"): where risk of collision
+    /// arose at or beyond this range, an action begun with the range already
+    /// under it is late. Default 2 nm (3704 m), after Woerner et al. (2019),
+    /// whose evaluator asks for the give-way manoeuvre at 2 nm or more.
     pub late_action_range_m: f64,
-    /// An action begun within this long after the latch is never late: the
-    /// risk arose too close to have been met earlier. Default 60 s.
+    /// Grace time: where risk arose nearer than `late_action_range_m`, an
+    /// action begun within this long after the latch is early enough (the
+    /// risk could not have been met earlier); one begun later is late.
+    /// Default 60 s (one observation window; CommonOcean's rule monitor,
+    /// Krasowski and Althoff, allows about 2 minutes).
     pub reaction_time_s: f64,
+    /// A course over ground that differs from the reference course by at
+    /// least this much means the give-way action has begun, radians. Default
+    /// 5°: above the 2° smallest detectable change (Woerner 2019), so that
+    /// course noise does not start an action, below the 10° "starboard
+    /// manoeuvre" of the NTNU evaluator (Hagen et al., Ocean Engineering 2023).
+    pub action_detection_rad: f64,
+    /// A speed over ground reduced by at least this fraction of the reference
+    /// speed means the give-way action has begun. Default 0.2 (20 %).
+    pub action_speed_drop_fraction: f64,
     /// A speed reduction of at least this fraction of the reference speed is
     /// readily apparent on its own (notes: "a speed reduction of half").
     /// Default 0.5.
@@ -94,8 +115,10 @@ impl Default for ScoringParameters {
             near_miss_m: 100.0,
             collision_m: 25.0,
             near_miss_safety: 0.5,
-            late_action_range_m: 1852.0,
+            late_action_range_m: 2.0 * 1852.0,
             reaction_time_s: 60.0,
+            action_detection_rad: 5f64.to_radians(),
+            action_speed_drop_fraction: 0.2,
             apparent_speed_reduction_fraction: 0.5,
             penalties: PenaltyWeights::default(),
         }
@@ -147,12 +170,27 @@ impl ScoringParameters {
                 return invalid(field, value, "a finite number of at least 0");
             }
         }
-        let fraction = self.apparent_speed_reduction_fraction;
-        if !(fraction > 0.0 && fraction <= 1.0) {
-            return invalid(
+        let fractions = [
+            (
                 "apparent_speed_reduction_fraction",
-                fraction,
-                "a number in (0, 1]",
+                self.apparent_speed_reduction_fraction,
+            ),
+            (
+                "action_speed_drop_fraction",
+                self.action_speed_drop_fraction,
+            ),
+        ];
+        for (field, fraction) in fractions {
+            if !(fraction > 0.0 && fraction <= 1.0) {
+                return invalid(field, fraction, "a number in (0, 1]");
+            }
+        }
+        let detection = self.action_detection_rad;
+        if !(detection.is_finite() && detection > 0.0 && detection <= std::f64::consts::PI) {
+            return invalid(
+                "action_detection_rad",
+                detection,
+                "an angle in (0, π] radians",
             );
         }
         let p = &self.penalties;
@@ -167,6 +205,8 @@ impl ScoringParameters {
             ("penalties.stand_on_course_change", p.stand_on_course_change),
             ("penalties.stand_on_speed_change", p.stand_on_speed_change),
             ("penalties.stand_on_port_turn", p.stand_on_port_turn),
+            ("penalties.small_alterations", p.small_alterations),
+            ("penalties.not_held", p.not_held),
         ];
         for (field, value) in unit {
             if !(0.0..=1.0).contains(&value) {

@@ -122,27 +122,32 @@ fn head_on_without_action_is_no_action_and_collision() {
 }
 
 #[test]
-fn no_action_is_not_needed_when_the_pass_was_already_clear() {
-    // Predicted CPA 800 m to port: risk latched (under 1 nm) but clear of d_th.
+fn no_action_is_a_finding_even_when_the_pass_was_clear_of_d_th() {
+    // Predicted CPA 800 m to port: risk latched (under 1 nm), clear of d_th;
+    // a give-way vessel at risk of collision still acts (rule 16, as the
+    // published evaluators judge it).
     let rules = RuleParameters::default();
     let target = VesselState::new(DVec2::new(-800.0, 9000.0), PI, 6.0, 50.0);
     let samples = run(target, f64::INFINITY, 0.0, 1500.0);
     let latch = first_latch(&samples, &rules).expect("risk");
     let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
-    assert!(a.compliant, "{:?}", a.violations);
+    assert_eq!(a.violations, vec![ComplianceViolation::NoAction]);
     assert_eq!(a.action_time_s, None);
     assert!((a.latch_cpa_m.expect("latched") - 800.0).abs() < 1e-6);
-    // The mirror image needs no action either, but passes starboard to
-    // starboard, which rule 14(a) names whatever the distance.
+    // The mirror image also passes starboard to starboard, which rule 14(a)
+    // names whatever the distance.
     let target = VesselState::new(DVec2::new(800.0, 9000.0), PI, 6.0, 50.0);
     let samples = run(target, f64::INFINITY, 0.0, 1500.0);
     let latch = first_latch(&samples, &rules).expect("risk");
     let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
     assert_eq!(
         a.violations,
-        vec![ComplianceViolation::StarboardToStarboard]
+        vec![
+            ComplianceViolation::NoAction,
+            ComplianceViolation::StarboardToStarboard
+        ]
     );
-    assert_eq!(a.scores.rule_16, Some(1.0));
+    assert_eq!(a.scores.rule_16, Some(0.0));
     assert_eq!(a.scores.rule_14, Some(0.5));
 }
 

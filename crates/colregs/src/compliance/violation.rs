@@ -64,6 +64,24 @@ pub enum ComplianceViolation {
         /// The course change at that moment, radians (negative).
         course_change_rad: f64,
     },
+    /// A give-way vessel made a succession of small alterations while the
+    /// encounter was in force: two or more alteration episodes each at least
+    /// detectable and smaller than readily apparent (rule 8(b)).
+    SmallAlterations {
+        /// How many small alteration episodes.
+        episodes: usize,
+    },
+    /// A give-way vessel eased its readily apparent alteration back below
+    /// readily apparent before the closest approach (rules 8(d), 16: the
+    /// action is held until the other vessel is past).
+    AlterationNotHeld {
+        /// The course change it eased back to, radians, positive to starboard
+        /// (0 for an alteration of speed).
+        course_change_rad: f64,
+        /// The speed change it eased back to, m/s (0 for an alteration of
+        /// course).
+        speed_change_mps: f64,
+    },
 }
 
 impl ComplianceViolation {
@@ -78,6 +96,7 @@ impl ComplianceViolation {
         match self {
             Self::ClearanceViolated { .. } | Self::Collision { .. } => None,
             Self::NoAction | Self::LateAction { .. } | Self::ActionNotApparent { .. } => Some(16),
+            Self::SmallAlterations { .. } | Self::AlterationNotHeld { .. } => Some(8),
             Self::PortTurn { .. } | Self::StarboardToStarboard => Some(14),
             Self::CrossedAhead { .. } => Some(15),
             Self::StandOnCourseChanged { .. }
@@ -107,6 +126,8 @@ impl ComplianceViolation {
             Self::StandOnCourseChanged { .. } => "stand_on_course_changed",
             Self::StandOnSpeedChanged { .. } => "stand_on_speed_changed",
             Self::StandOnTurnedToPort { .. } => "stand_on_turned_to_port",
+            Self::SmallAlterations { .. } => "small_alterations",
+            Self::AlterationNotHeld { .. } => "alteration_not_held",
         }
     }
 }
@@ -160,6 +181,18 @@ impl std::fmt::Display for ComplianceViolation {
                 f,
                 "stand-on vessel turned {:.1}° to port for a vessel on its own port side (rule 17(c))",
                 -course_change_rad.to_degrees()
+            ),
+            Self::SmallAlterations { episodes } => write!(
+                f,
+                "succession of {episodes} small alterations, each under readily apparent (rule 8(b))"
+            ),
+            Self::AlterationNotHeld {
+                course_change_rad,
+                speed_change_mps,
+            } => write!(
+                f,
+                "give-way alteration eased back to {:.1}°, {speed_change_mps:.2} m/s before the closest approach (rules 8(d), 16)",
+                course_change_rad.to_degrees()
             ),
         }
     }

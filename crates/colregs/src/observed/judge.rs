@@ -1,0 +1,279 @@
+//! The judgement of a recording as observed: every vessel's course and speed
+//! over ground, ownship's path quality, and each target's encounter latched
+//! and assessed on the observed states.
+
+use super::observe::{OverGround, over_ground_from};
+use super::quality::{PathQuality, path_quality};
+use super::{ObservedParameters, RecordedTrack, Recording};
+use crate::compliance::measure::closest_approach;
+use crate::compliance::{
+    ComplianceViolation, EncounterAssessment, EncounterSample, assess_encounter_acting,
+    first_latch, safety_score,
+};
+use crate::error::ColregsError;
+use crate::latch::{EncounterLatch, update_latch};
+use crate::rules::{gives_way, in_contact};
+use crate::vessel::VesselState;
+use serde::{Deserialize, Serialize};
+
+/// A finding about ownship's track as a whole, not about one encounter.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum TrackFinding {
+    /// The track turns faster than the vessel can
+    /// ([`max_turn_rate_rad_s`](ObservedParameters::max_turn_rate_rad_s)):
+    /// the track is not one the vessel could have sailed.
+    TurnRateExceeded {
+        /// The largest rate of turn in the track, degrees per second.
+        rate_deg_s: f64,
+        /// The vessel's limit, degrees per second.
+        limit_deg_s: f64,
+    },
+}
+
+impl TrackFinding {
+    /// A short name in snake case, as used in reports.
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::TurnRateExceeded { .. } => "turn_rate_exceeded",
+        }
+    }
+}
+
+impl std::fmt::Display for TrackFinding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            Self::TurnRateExceeded {
+                rate_deg_s,
+                limit_deg_s,
+            } => write!(
+                f,
+                "rate of turn {rate_deg_s:.2}°/s above the vessel's limit of {limit_deg_s:.2}°/s"
+            ),
+        }
+    }
+}
+
+/// Ownship and one target, judged on the observed states.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ObservedEncounter {
+    /// The target's name.
+    pub name: String,
+    /// The encounter latched on the observed states (`None`: no risk of
+    /// collision ever arose).
+    pub latch: Option<EncounterLatch>,
+    /// Smallest distance between the two over the run, metres (exact between
+    /// samples; `+∞` with no samples).
+    pub min_distance_m: f64,
+    /// When it occurred, seconds.
+    pub time_of_min_s: f64,
+    /// Whether the hulls touched ([`in_contact`]).
+    pub collision: bool,
+    /// Whether the minimum distance kept the clearance d_th.
+    pub clearance_kept: bool,
+    /// The assessment of the encounter on the observed states (`None` when
+    /// no encounter arose).
+    pub assessment: Option<EncounterAssessment>,
+    /// Every finding, safety findings first (with no encounter, only the
+    /// clearance finding if broken).
+    pub findings: Vec<ComplianceViolation>,
+    /// Safety times every applicable rule score, in `[0, 1]`.
+    pub score: f64,
+    /// Whether no rule was broken (safety findings do not count).
+    pub compliant: bool,
+}
+
+/// The judgement of a whole recording as observed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ObservedJudgement {
+    /// Ownship's observed course and speed over ground at every sample.
+    pub ownship: Vec<OverGround>,
+    /// Ownship's path quality.
+    pub path: PathQuality,
+    /// Findings about ownship's track as a whole.
+    pub track_findings: Vec<TrackFinding>,
+    /// Per target, in recording order.
+    pub targets: Vec<ObservedEncounter>,
+    /// No finding: no track finding and no rule broken in any encounter.
+    pub compliant: bool,
+}
+
+/// Judges a recording on the track as sailed and as observed (see the
+/// [module documentation](super)).
+///
+/// # Errors
+/// [`ColregsError::InvalidParameter`] when a parameter is out of range,
+/// [`ColregsError::InvalidRecording`] when the recording is malformed.
+pub fn judge(
+    recording: &Recording,
+    parameters: &ObservedParameters,
+) -> Result<ObservedJudgement, ColregsError> {
+    parameters.validate()?;
+    recording.validate()?;
+    let times_s = &recording.times_s;
+    let window_s = parameters.window_s;
+    let ownship = observe(times_s, &recording.ownship, window_s);
+    let own_states = observed_states(&recording.ownship, &ownship);
+    let courses: Vec<f64> = match &recording.ownship.courses_rad {
+        Some(courses) => courses.clone(),
+        None => ownship.iter().map(|o| o.course_rad).collect(),
+    };
+    let path = path_quality(
+        times_s,
+        &recording.ownship.positions_m,
+        &courses,
+        &parameters.rules,
+    );
+    let track_findings = parameters
+        .max_turn_rate_rad_s
+        .map(f64::to_degrees)
+        .filter(|limit| path.max_turn_rate_deg_s > limit * (1.0 + 1e-6) + 1e-9)
+        .map(|limit_deg_s| TrackFinding::TurnRateExceeded {
+            rate_deg_s: path.max_turn_rate_deg_s,
+            limit_deg_s,
+        })
+        .into_iter()
+        .collect::<Vec<_>>();
+    let samples: Vec<Vec<EncounterSample>> = recording
+        .targets
+        .iter()
+        .map(|track| {
+            let observed = observe(times_s, track, window_s);
+            let states = observed_states(track, &observed);
+            times_s
+                .iter()
+                .zip(&own_states)
+                .zip(states)
+                .map(|((time_s, own), target)| EncounterSample::new(*time_s, *own, target))
+                .collect()
+        })
+        .collect();
+    let giving_way = giving_way_at(&samples, parameters);
+    let targets: Vec<ObservedEncounter> = recording
+        .targets
+        .iter()
+        .zip(&samples)
+        .map(|(track, samples)| judge_target(&track.name, samples, &giving_way, parameters))
+        .collect();
+    let compliant = track_findings.is_empty() && targets.iter().all(|target| target.compliant);
+    Ok(ObservedJudgement {
+        ownship,
+        path,
+        track_findings,
+        targets,
+        compliant,
+    })
+}
+
+/// The observed course and speed over ground of a track; with recorded
+/// courses, the vessel held its first course at its first step's speed
+/// before the start ([`over_ground_from`]).
+fn observe(times_s: &[f64], track: &RecordedTrack, window_s: f64) -> Vec<OverGround> {
+    let before_start_mps = match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
+        (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses
+            .first()
+            .map(|course| vorrt_geometry::angle::velocity(*course, p0.distance(*p1) / (t1 - t0))),
+        _ => None,
+    };
+    over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
+}
+
+/// The observed states of a track: recorded positions, observed course and
+/// speed over ground.
+fn observed_states(track: &RecordedTrack, observed: &[OverGround]) -> Vec<VesselState> {
+    track
+        .positions_m
+        .iter()
+        .zip(observed)
+        .map(|(position_m, over)| {
+            VesselState::new(*position_m, over.course_rad, over.speed_mps, track.length_m)
+        })
+        .collect()
+}
+
+/// At each sample, whether ownship gave way to some target then (an encounter
+/// in force, latched on the observed states, in which it gives way): while it
+/// does, it may act for the vessels it stands on for ([`crate::rules::may_act`]).
+fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParameters) -> Vec<bool> {
+    let count = samples.first().map_or(0, Vec::len);
+    let mut giving_way = vec![false; count];
+    for track in samples {
+        let mut latch = None;
+        for (sample, giving) in track.iter().zip(giving_way.iter_mut()) {
+            latch = update_latch(
+                latch,
+                &sample.own,
+                &sample.target,
+                sample.time_s,
+                &parameters.rules,
+            );
+            *giving |= latch.is_some_and(|latch| gives_way(latch.encounter));
+        }
+    }
+    giving_way
+}
+
+/// One target: latched and assessed on the observed states, or, if no risk
+/// ever arose, judged on clearance alone.
+fn judge_target(
+    name: &str,
+    samples: &[EncounterSample],
+    giving_way: &[bool],
+    parameters: &ObservedParameters,
+) -> ObservedEncounter {
+    let scoring = &parameters.scoring;
+    let latch = first_latch(samples, &parameters.rules);
+    if let Some(latch) = latch {
+        let assessment =
+            assess_encounter_acting(samples, &latch, &parameters.rules, scoring, giving_way);
+        let collision = assessment
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::Collision { .. }));
+        return ObservedEncounter {
+            name: name.to_owned(),
+            latch: Some(latch),
+            min_distance_m: assessment.min_distance_m,
+            time_of_min_s: assessment.time_of_min_s,
+            collision,
+            clearance_kept: assessment.safe,
+            findings: assessment.violations.clone(),
+            score: assessment.scores.overall,
+            compliant: assessment.compliant,
+            assessment: Some(assessment),
+        };
+    }
+    let (min_distance_m, time_of_min_s, collision) = match closest_approach(samples) {
+        Some((distance_m, time_s, index)) => {
+            let at = &samples[index];
+            let contact = in_contact(distance_m, at.own.length_m, at.target.length_m);
+            (distance_m, time_s, contact)
+        }
+        None => (f64::INFINITY, 0.0, false),
+    };
+    let clearance_kept = min_distance_m >= scoring.clearance_m;
+    let mut findings = Vec::new();
+    if !clearance_kept {
+        findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });
+    }
+    if collision {
+        findings.push(ComplianceViolation::Collision { min_distance_m });
+    }
+    ObservedEncounter {
+        name: name.to_owned(),
+        latch: None,
+        min_distance_m,
+        time_of_min_s,
+        collision,
+        clearance_kept,
+        assessment: None,
+        findings,
+        score: if collision {
+            0.0
+        } else {
+            safety_score(min_distance_m, scoring)
+        },
+        compliant: true,
+    }
+}

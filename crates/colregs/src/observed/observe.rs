@@ -1,0 +1,130 @@
+//! Course and speed over ground as another vessel observes them: the
+//! displacement over a sliding window (see the [module
+//! documentation](super), "Observed course and speed").
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+use vorrt_geometry::angle;
+
+/// Course and speed over ground at one sample, as observed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct OverGround {
+    /// Course over ground (COG), radians clockwise from north in `[0, 2π)`.
+    pub course_rad: f64,
+    /// Speed over ground (SOG), metres per second.
+    pub speed_mps: f64,
+}
+
+/// Displacements shorter than this are no movement: the course is carried
+/// over from the sample before, metres.
+const STILL_M: f64 = 1e-9;
+
+/// The observed course and speed over ground at every sample of a track:
+/// COG is the direction of `p(t) - p(t - window)`, SOG its length over the
+/// window. `p(t - window)` is interpolated linearly between samples; near the
+/// start, where `t - window` precedes the first sample, the window is
+/// shortened to what is available, and at the first sample itself the first
+/// step is used (`p(t₁) - p(t₀)`). A vessel that has not moved over its
+/// window keeps the course observed before (north at the start) with speed 0.
+///
+/// `times_s` must be increasing and as long as `positions_m` (the
+/// [`Recording`](super::Recording) checks this); extra entries of either are
+/// ignored. [`over_ground_from`] takes the velocity held before the first
+/// sample, where it is known, instead of shortening the window.
+///
+/// ```
+/// use vorrt_colregs::observed::over_ground;
+/// use glam::DVec2;
+/// let times: Vec<f64> = (0..10).map(|i| f64::from(i) * 10.0).collect();
+/// // East at 5 m/s.
+/// let positions: Vec<DVec2> = times.iter().map(|t| DVec2::new(5.0 * t, 0.0)).collect();
+/// let observed = over_ground(&times, &positions, 60.0);
+/// assert!((observed[7].course_rad.to_degrees() - 90.0).abs() < 1e-9);
+/// assert!((observed[7].speed_mps - 5.0).abs() < 1e-9);
+/// ```
+#[must_use]
+pub fn over_ground(times_s: &[f64], positions_m: &[DVec2], window_s: f64) -> Vec<OverGround> {
+    over_ground_from(times_s, positions_m, window_s, None)
+}
+
+/// As [`over_ground`], for a vessel known to have held `before_start_mps`
+/// (a velocity over ground, m/s) before the first sample: a recorded run
+/// starts with every vessel in steady motion on its first course, so the
+/// window reaches back before the start along that velocity instead of
+/// shrinking (with `None`, as [`over_ground`]).
+///
+/// ```
+/// use vorrt_colregs::observed::over_ground_from;
+/// use glam::DVec2;
+/// // North at 5 m/s before the start, then turned east at once.
+/// let times = [0.0, 10.0, 20.0];
+/// let positions = [DVec2::ZERO, DVec2::new(50.0, 0.0), DVec2::new(100.0, 0.0)];
+/// let observed = over_ground_from(&times, &positions, 20.0, Some(DVec2::new(0.0, 5.0)));
+/// assert!(observed[0].course_rad.abs() < 1e-12);
+/// assert!((observed[1].course_rad.to_degrees() - 45.0).abs() < 1e-9);
+/// assert!((observed[2].course_rad.to_degrees() - 90.0).abs() < 1e-9);
+/// ```
+#[must_use]
+pub fn over_ground_from(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    window_s: f64,
+    before_start_mps: Option<DVec2>,
+) -> Vec<OverGround> {
+    let count = times_s.len().min(positions_m.len());
+    let (times_s, positions_m) = (&times_s[..count], &positions_m[..count]);
+    let mut observed = Vec::with_capacity(count);
+    let mut last_course = 0.0;
+    for index in 0..count {
+        let (displacement, elapsed_s) = if let Some(velocity) = before_start_mps {
+            let from_s = times_s[index] - window_s;
+            let from_m = if from_s < times_s[0] {
+                positions_m[0] + velocity * (from_s - times_s[0])
+            } else {
+                position_at(times_s, positions_m, from_s, index)
+            };
+            (positions_m[index] - from_m, window_s)
+        } else if index == 0 {
+            match (times_s.get(1), positions_m.get(1)) {
+                (Some(next_s), Some(next_m)) => (*next_m - positions_m[0], next_s - times_s[0]),
+                _ => (DVec2::ZERO, 0.0),
+            }
+        } else {
+            let from_s = (times_s[index] - window_s).max(times_s[0]);
+            let from_m = position_at(times_s, positions_m, from_s, index);
+            (positions_m[index] - from_m, times_s[index] - from_s)
+        };
+        let (course_rad, speed_mps) = if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
+            (last_course, 0.0)
+        } else {
+            (
+                angle::unit_to_course(displacement),
+                displacement.length() / elapsed_s,
+            )
+        };
+        last_course = course_rad;
+        observed.push(OverGround {
+            course_rad,
+            speed_mps,
+        });
+    }
+    observed
+}
+
+/// The position at `time_s`, interpolated between the samples at or before
+/// `upto` (the sample whose window this is).
+fn position_at(times_s: &[f64], positions_m: &[DVec2], time_s: f64, upto: usize) -> DVec2 {
+    // The last sample at or before `time_s`.
+    let after = times_s[..=upto].partition_point(|t| *t <= time_s);
+    let before = after.saturating_sub(1);
+    if after > upto || after == 0 {
+        return positions_m[before];
+    }
+    let (t0, t1) = (times_s[before], times_s[after]);
+    let fraction = if t1 > t0 {
+        ((time_s - t0) / (t1 - t0)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    positions_m[before].lerp(positions_m[after], fraction)
+}

@@ -1,0 +1,107 @@
+//! What the observed judgement reads: the recorded tracks of ownship and
+//! every target on one time base.
+
+use crate::error::ColregsError;
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+
+/// One vessel's recorded track.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecordedTrack {
+    /// The vessel's name, for findings and errors.
+    pub name: String,
+    /// Length overall, metres.
+    pub length_m: f64,
+    /// Position at every sample time, metres (x east, y north).
+    pub positions_m: Vec<DVec2>,
+    /// Recorded course (heading) at every sample time, radians clockwise from
+    /// north, where the recording gives it; `None` where it gives positions
+    /// only (the path quality then reads the observed course over ground).
+    pub courses_rad: Option<Vec<f64>>,
+}
+
+/// A recorded run: sample times, ownship's track and every target's, each
+/// track with one entry per sample time.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Recording {
+    /// Sample times, seconds, strictly increasing.
+    pub times_s: Vec<f64>,
+    /// Ownship's track.
+    pub ownship: RecordedTrack,
+    /// The targets' tracks.
+    pub targets: Vec<RecordedTrack>,
+}
+
+impl Recording {
+    /// Checks the recording: times finite and strictly increasing; every
+    /// track as long as the times, its length positive and finite, its
+    /// positions and courses finite.
+    ///
+    /// # Errors
+    /// [`ColregsError::InvalidRecording`] naming the vessel, the field and the
+    /// sample that is wrong.
+    ///
+    /// ```
+    /// use vorrt_colregs::observed::{Recording, RecordedTrack};
+    /// use glam::DVec2;
+    /// let track = |n: usize| RecordedTrack {
+    ///     name: "ownship".into(), length_m: 100.0,
+    ///     positions_m: vec![DVec2::ZERO; n], courses_rad: None,
+    /// };
+    /// let good = Recording { times_s: vec![0.0, 5.0], ownship: track(2), targets: vec![] };
+    /// assert!(good.validate().is_ok());
+    /// let short = Recording { times_s: vec![0.0, 5.0], ownship: track(1), targets: vec![] };
+    /// assert!(short.validate().unwrap_err().to_string().contains("ownship"));
+    /// ```
+    pub fn validate(&self) -> Result<(), ColregsError> {
+        let invalid = |what: String| Err(ColregsError::InvalidRecording { what });
+        if let Some(index) = self.times_s.iter().position(|t| !t.is_finite()) {
+            return invalid(format!("times_s[{index}] is not a finite number"));
+        }
+        for (index, pair) in self.times_s.windows(2).enumerate() {
+            if pair[1] <= pair[0] {
+                return invalid(format!(
+                    "times_s[{}] = {} does not follow times_s[{index}] = {}: times must be strictly increasing",
+                    index + 1,
+                    pair[1],
+                    pair[0]
+                ));
+            }
+        }
+        let samples = self.times_s.len();
+        for track in std::iter::once(&self.ownship).chain(&self.targets) {
+            let name = &track.name;
+            if !(track.length_m.is_finite() && track.length_m > 0.0) {
+                return invalid(format!(
+                    "vessel `{name}`: length_m is {}, expected a finite length greater than 0",
+                    track.length_m
+                ));
+            }
+            if track.positions_m.len() != samples {
+                return invalid(format!(
+                    "vessel `{name}`: {} positions for {samples} sample times",
+                    track.positions_m.len()
+                ));
+            }
+            if let Some(index) = track.positions_m.iter().position(|p| !p.is_finite()) {
+                return invalid(format!(
+                    "vessel `{name}`: positions_m[{index}] is not finite"
+                ));
+            }
+            if let Some(courses) = &track.courses_rad {
+                if courses.len() != samples {
+                    return invalid(format!(
+                        "vessel `{name}`: {} courses for {samples} sample times",
+                        courses.len()
+                    ));
+                }
+                if let Some(index) = courses.iter().position(|c| !c.is_finite()) {
+                    return invalid(format!(
+                        "vessel `{name}`: courses_rad[{index}] is not finite"
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+}
