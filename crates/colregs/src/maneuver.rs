@@ -355,8 +355,8 @@ pub fn check_alteration(
     Ok(())
 }
 
-/// Rules 8(a), 8(d) and 16 for a give-way vessel (head-on or crossing): the
-/// action is early, and held until the other vessel is past.
+/// Rules 8(a), 8(d) and 16 for a give-way vessel (head-on, crossing or
+/// overtaking): the action is early, and held until the other vessel is past.
 ///
 /// - **Early** (`LateAction`): until a readily apparent alteration has been
 ///   made (`altered_rad` under [`apparent_turn_rad`](RuleParameters::apparent_turn_rad)),
@@ -366,7 +366,10 @@ pub fn check_alteration(
 ///   must be farther than [`give_way_action_range_m`](RuleParameters::give_way_action_range_m).
 /// - **Held** (`AlterationNotHeld`): once it has been made, while the range
 ///   is still closing, the candidate's course stays at least the apparent
-///   alteration to starboard of the reference.
+///   alteration to starboard of the reference, in head-on and crossing (an
+///   overtaking vessel may come back to a parallel course once it has opened
+///   its passing distance: rule 13 asks it to keep out of the way, which the
+///   clearance checks judge).
 ///
 /// ```
 /// use vorrt_colregs::{check_action, CandidateMotion, EncounterLatch, Encounter, ManeuverViolation, RuleParameters, VesselState};
@@ -395,10 +398,11 @@ pub fn check_action(
     parameters: &RuleParameters,
     altered_rad: f64,
 ) -> Result<(), ManeuverViolation> {
-    if !matches!(
+    let keeps_clear = matches!(
         latch.encounter,
         Encounter::HeadOn | Encounter::CrossingGiveWay
-    ) {
+    );
+    if !keeps_clear && latch.encounter != Encounter::Overtaking {
         return Ok(());
     }
     let offset = target_position_m - own.position_m;
@@ -419,7 +423,11 @@ pub fn check_action(
         }
         return Ok(());
     }
-    if closing && turn < parameters.apparent_turn_rad - parameters.turn_tolerance_rad {
+    // An overtaking vessel may come back to a parallel course once it has
+    // opened its passing distance (rule 13 asks it to keep out of the way,
+    // which the clearance checks judge); head-on and crossing hold on.
+    if keeps_clear && closing && turn < parameters.apparent_turn_rad - parameters.turn_tolerance_rad
+    {
         return Err(ManeuverViolation::AlterationNotHeld);
     }
     Ok(())

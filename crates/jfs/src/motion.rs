@@ -30,10 +30,13 @@ use vorrt_geometry::angle;
 /// inside the hard-over limit, so 3 L is used for planning.
 pub const DEFAULT_TURN_RADIUS_LENGTHS: f64 = 3.0;
 
-/// The largest default rate of turn, radians per second (1°/s): small craft
-/// could turn faster, but a rate of turn above this is not what merchant
-/// ships or evaluators expect of an alteration of course.
-pub const MAX_DEFAULT_TURN_RATE_RAD_S: f64 = 1.0 * std::f64::consts::PI / 180.0;
+/// The largest default rate of turn, radians per second (0.5°/s): ships
+/// alter course at about 0.2-0.5°/s (an autopilot's rate-of-turn limit; the
+/// practical rate 0.96 V[kn] / R[nm] °/min is 0.48°/s at 15 kn on a 0.5 nm
+/// radius), well inside their hard-over rates (about 0.5-1.5°/s for 100-200 m
+/// ships); small craft could turn faster, but this is what other vessels and
+/// evaluators expect of an alteration of course.
+pub const MAX_DEFAULT_TURN_RATE_RAD_S: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 /// The smallest default turning radius, metres, for very short vessels.
 pub const MIN_DEFAULT_TURN_RADIUS_M: f64 = 50.0;
@@ -50,9 +53,12 @@ pub const CHORD_ANGLE_RAD: f64 = 5.0 * std::f64::consts::PI / 180.0;
 ///
 /// ```
 /// use vorrt_jfs::motion::default_turn_rate_rad_s;
-/// // A 150 m ship at 12 kn: radius 450 m, about 0.79°/s.
+/// // A 300 m ship at 12 kn: radius 900 m, about 0.39°/s.
+/// let rate = default_turn_rate_rad_s(300.0, 12.0 * 1852.0 / 3600.0);
+/// assert!((rate.to_degrees() - 0.393).abs() < 0.01);
+/// // A 150 m ship at 12 kn would turn at 0.79°/s on 3 lengths: capped.
 /// let rate = default_turn_rate_rad_s(150.0, 12.0 * 1852.0 / 3600.0);
-/// assert!((rate.to_degrees() - 0.786).abs() < 0.01);
+/// assert!((rate.to_degrees() - 0.5).abs() < 1e-9);
 /// ```
 #[must_use]
 pub fn default_turn_rate_rad_s(length_m: f64, speed_mps: f64) -> f64 {
@@ -659,6 +665,6 @@ mod tests {
     #[test]
     fn default_rate_is_capped_and_from_length() {
         assert!((default_turn_rate_rad_s(10.0, 10.0) - MAX_DEFAULT_TURN_RATE_RAD_S).abs() < 1e-15);
-        assert!((default_turn_rate_rad_s(200.0, 6.0) - 6.0 / 600.0).abs() < 1e-15);
+        assert!((default_turn_rate_rad_s(400.0, 6.0) - 6.0 / 1200.0).abs() < 1e-15);
     }
 }

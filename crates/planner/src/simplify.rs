@@ -179,10 +179,12 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 
 /// The alterations of course the manoeuvre search tries, degrees (positive
 /// to starboard), in order: holding on, then readily apparent alterations to
-/// starboard (rules 14, 15, 16: at least 30°), then to port (where the rules
-/// allow it: overtaking, or a stand-on vessel that may act).
+/// starboard (rules 14, 15, 16: at least 30°; the smallest tried is 35° so
+/// that an observer measuring course over ground with some error still sees
+/// 30°), then to port (where the rules allow it: overtaking, or a stand-on
+/// vessel that may act).
 pub const ALTERATIONS_DEG: [f64; 12] = [
-    0.0, 30.0, 40.0, 50.0, 60.0, 75.0, 90.0, -30.0, -40.0, -50.0, -60.0, -90.0,
+    0.0, 35.0, 45.0, 55.0, 65.0, 80.0, 90.0, -35.0, -45.0, -55.0, -65.0, -90.0,
 ];
 
 /// How far the present course is held before heading for the goal, metres,

@@ -106,7 +106,12 @@ impl Findings {
                         });
                     penalties.push(weights.not_apparent * (1.0 - apparentness).clamp(0.0, 1.0));
                 }
-                if let Some(eased) = measured.eased_back {
+                // Held until past: in head-on and crossing; an overtaking
+                // vessel may come back to a parallel course once it has
+                // opened its passing distance (as `check_action` allows).
+                if let Some(eased) = measured.eased_back
+                    && latch.encounter != Encounter::Overtaking
+                {
                     let (course_change_rad, speed_change_mps) = match eased {
                         EasedBack::Course(change) => (change, 0.0),
                         EasedBack::Speed(change) => (0.0, change),
