@@ -319,6 +319,28 @@ pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
     distance_m < contact_range_m(length_a_m, length_b_m)
 }
 
+/// Whether two vessels of lengths `length_a_m` and `length_b_m`, their
+/// reference positions `distance_m` apart, keep the clearance `clearance_m`
+/// (d_th) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
+/// The planner keeps its reference points that far apart, so "d_th kept" is
+/// never hull contact (`docs/architecture.md`).
+///
+/// ```
+/// use vorrt_colregs::rules::keeps_clearance;
+/// // Two 150 m ships 300 m apart: 150 m between the hulls, under 200 m.
+/// assert!(!keeps_clearance(300.0, 150.0, 150.0, 200.0));
+/// assert!(keeps_clearance(350.0, 150.0, 150.0, 200.0));
+/// ```
+#[must_use]
+pub fn keeps_clearance(
+    distance_m: f64,
+    length_a_m: f64,
+    length_b_m: f64,
+    clearance_m: f64,
+) -> bool {
+    distance_m - contact_range_m(length_a_m, length_b_m) >= clearance_m
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -131,6 +131,10 @@ pub struct Evaluation {
     pub replans: usize,
     /// Planner calls that failed.
     pub failed_plans: usize,
+    /// Planner calls after which ownship departed from the rules (a graded
+    /// fallback plan or the evasive manoeuvre; rules 2(b), 17(b)).
+    #[serde(default)]
+    pub rule_departures: usize,
     /// Wall-clock time spent planning, seconds.
     pub planning_time_s: f64,
     /// Per target, in scenario order.
@@ -315,6 +319,7 @@ pub fn evaluate_with(
         plans_made: record.plans_made(),
         replans: record.replans(),
         failed_plans: record.failed_plans(),
+        rule_departures: record.rule_departures(),
         planning_time_s: record.planning_time_s(),
         targets,
     }

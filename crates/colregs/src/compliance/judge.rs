@@ -36,12 +36,13 @@ fn rule_score(penalties: &[f64]) -> f64 {
 }
 
 impl Findings {
-    /// The safety findings, whatever the role: the clearance broken, and a
+    /// The safety findings, whatever the role: the clearance broken between
+    /// the hulls ([`keeps_clearance`](crate::rules::keeps_clearance)), and a
     /// collision (hull contact, [`in_contact`](crate::rules::in_contact)).
-    pub(super) fn safety(measured: &Measurements, scoring: &ScoringParameters) -> Self {
+    pub(super) fn safety(measured: &Measurements) -> Self {
         let min_distance_m = measured.min_distance_m;
         let mut violations = Vec::new();
-        if min_distance_m < scoring.clearance_m {
+        if !measured.clearance_kept {
             violations.push(ComplianceViolation::ClearanceViolated { min_distance_m });
         }
         if measured.in_contact {

@@ -10,6 +10,7 @@ use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
     course_change_rad, in_contact, is_detectable_turn, is_measured_readily_apparent,
+    keeps_clearance,
 };
 use crate::vessel::VesselState;
 use glam::DVec2;
@@ -98,6 +99,8 @@ pub(super) struct Measurements {
     pub(super) time_of_min_s: f64,
     /// Whether the hulls touched at the closest approach ([`in_contact`]).
     pub(super) in_contact: bool,
+    /// Whether d_th was kept between the hulls ([`keeps_clearance`]).
+    pub(super) clearance_kept: bool,
     /// Side of ownship on which the target lay at the closest approach.
     pub(super) passing_side: Option<PassingSide>,
     /// Range at the first in-force sample.
@@ -165,14 +168,20 @@ impl Measurements {
         parameters: &RuleParameters,
         scoring: &ScoringParameters,
     ) -> Self {
-        let (min_distance_m, time_of_min_s, in_contact, passing_side) =
+        let (min_distance_m, time_of_min_s, in_contact, clearance_kept, passing_side) =
             match closest_approach(samples) {
                 Some((distance, time, index)) => {
                     let at = &samples[index];
-                    let contact = in_contact(distance, at.own.length_m, at.target.length_m);
-                    (distance, time, contact, side_at(samples, index, time))
+                    let (own_m, target_m) = (at.own.length_m, at.target.length_m);
+                    (
+                        distance,
+                        time,
+                        in_contact(distance, own_m, target_m),
+                        keeps_clearance(distance, own_m, target_m, scoring.clearance_m),
+                        side_at(samples, index, time),
+                    )
                 }
-                None => (f64::INFINITY, latch.latched_at_s, false, None),
+                None => (f64::INFINITY, latch.latched_at_s, false, true, None),
             };
         let in_force = window.samples(samples);
         let latch_sample = in_force.first();
@@ -206,6 +215,7 @@ impl Measurements {
             min_distance_m,
             time_of_min_s,
             in_contact,
+            clearance_kept,
             passing_side,
             latch_range_m: latch_sample.map(EncounterSample::range_m),
             latch_cpa_m,

@@ -197,7 +197,7 @@ pub fn assess_encounter_acting(
 ) -> EncounterAssessment {
     let window = InForce::of(samples, latch, rules);
     let measured = Measurements::of(samples, &window, latch, rules, scoring);
-    let mut findings = Findings::safety(&measured, scoring);
+    let mut findings = Findings::safety(&measured);
     match latch.encounter.role() {
         Role::GiveWay => {
             findings.judge_give_way_action(&measured, latch, rules, scoring);
@@ -287,7 +287,7 @@ fn assemble(
             rule_17,
             overall,
         },
-        safe: measured.min_distance_m >= scoring.clearance_m,
+        safe: measured.clearance_kept,
         compliant,
     }
 }

@@ -12,7 +12,7 @@ use crate::compliance::{
 };
 use crate::error::ColregsError;
 use crate::latch::{EncounterLatch, update_latch};
-use crate::rules::{gives_way, in_contact};
+use crate::rules::{gives_way, in_contact, keeps_clearance};
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -244,15 +244,20 @@ fn judge_target(
             assessment: Some(assessment),
         };
     }
-    let (min_distance_m, time_of_min_s, collision) = match closest_approach(samples) {
+    let (min_distance_m, time_of_min_s, collision, clearance_kept) = match closest_approach(samples)
+    {
         Some((distance_m, time_s, index)) => {
             let at = &samples[index];
-            let contact = in_contact(distance_m, at.own.length_m, at.target.length_m);
-            (distance_m, time_s, contact)
+            let (own_m, target_m) = (at.own.length_m, at.target.length_m);
+            (
+                distance_m,
+                time_s,
+                in_contact(distance_m, own_m, target_m),
+                keeps_clearance(distance_m, own_m, target_m, scoring.clearance_m),
+            )
         }
-        None => (f64::INFINITY, 0.0, false),
+        None => (f64::INFINITY, 0.0, false, true),
     };
-    let clearance_kept = min_distance_m >= scoring.clearance_m;
     let mut findings = Vec::new();
     if !clearance_kept {
         findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });

@@ -4,6 +4,7 @@ use super::BatchItem;
 use crate::evaluation::Evaluation;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
+use vorrt_colregs::{ComplianceViolation, Role};
 
 /// The results of one scenario of a batch: one CSV row.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -60,6 +61,28 @@ pub struct BatchRow {
     pub violations: String,
     /// Why the scenario could not be run at all (empty when it ran).
     pub error: String,
+    /// Ownship's largest rate of turn as sailed, degrees per second.
+    #[serde(default)]
+    pub max_turn_rate_deg_s: f64,
+    /// Turn-direction reversals of ownship's course as observed.
+    #[serde(default)]
+    pub turn_reversals: usize,
+    /// Ownship's total course change per nautical mile sailed, degrees.
+    #[serde(default)]
+    pub course_change_deg_per_nm: f64,
+    /// Encounters in which ownship was the give-way vessel (head-on,
+    /// crossing give-way, overtaking) with risk latched.
+    #[serde(default)]
+    pub give_way_encounters: usize,
+    /// Of those, the ones with a readily apparent alteration as observed.
+    #[serde(default)]
+    pub give_way_apparent: usize,
+    /// Of those, the ones whose action began early (rules 8(a), 16).
+    #[serde(default)]
+    pub give_way_early: usize,
+    /// Planner calls after which ownship departed from the rules.
+    #[serde(default)]
+    pub rule_departures: usize,
 }
 
 impl BatchRow {
@@ -110,6 +133,13 @@ impl BatchRow {
             closest_encounter: String::new(),
             violations: String::new(),
             error,
+            max_turn_rate_deg_s: f64::NAN,
+            turn_reversals: 0,
+            course_change_deg_per_nm: f64::NAN,
+            give_way_encounters: 0,
+            give_way_apparent: 0,
+            give_way_early: 0,
+            rule_departures: 0,
         }
     }
 
@@ -149,6 +179,11 @@ impl BatchRow {
             }
         }
         let plans = evaluation.plans_made + evaluation.failed_plans;
+        let give_way: Vec<_> = evaluation
+            .targets
+            .iter()
+            .filter(|target| target.role == Role::GiveWay && target.risk_time_s.is_some())
+            .collect();
         let planning_time_ms = 1000.0 * evaluation.planning_time_s;
         Self {
             index: item.index,
@@ -182,6 +217,34 @@ impl BatchRow {
                 .unwrap_or_default(),
             violations: findings.into_iter().collect::<Vec<_>>().join(";"),
             error: String::new(),
+            max_turn_rate_deg_s: evaluation.max_turn_rate_deg_s,
+            turn_reversals: evaluation.turn_reversals,
+            course_change_deg_per_nm: evaluation.course_change_deg_per_nm,
+            give_way_encounters: give_way.len(),
+            give_way_apparent: give_way
+                .iter()
+                .filter(|target| {
+                    !target.findings.iter().any(|finding| {
+                        matches!(
+                            finding,
+                            ComplianceViolation::ActionNotApparent { .. }
+                                | ComplianceViolation::NoAction
+                        )
+                    })
+                })
+                .count(),
+            give_way_early: give_way
+                .iter()
+                .filter(|target| {
+                    !target.findings.iter().any(|finding| {
+                        matches!(
+                            finding,
+                            ComplianceViolation::LateAction { .. } | ComplianceViolation::NoAction
+                        )
+                    })
+                })
+                .count(),
+            rule_departures: evaluation.rule_departures,
         }
     }
 }

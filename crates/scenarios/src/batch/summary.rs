@@ -4,7 +4,7 @@ use super::{BatchRow, RULES};
 use serde::{Deserialize, Serialize};
 
 /// Percentiles of a distribution (nearest rank over the finite values).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Percentiles {
     /// How many finite values there were.
     pub count: usize,
@@ -101,6 +101,28 @@ pub struct BatchSummary {
     pub failed_plans: usize,
     /// Runs with at least one failed planner call.
     pub runs_with_failed_plans: usize,
+    /// Ownship's largest rate of turn per run, degrees per second.
+    #[serde(default)]
+    pub max_turn_rate_deg_s: Percentiles,
+    /// Turn-direction reversals per run.
+    #[serde(default)]
+    pub turn_reversals: Percentiles,
+    /// Course change per nautical mile sailed, degrees.
+    #[serde(default)]
+    pub course_change_deg_per_nm: Percentiles,
+    /// Give-way encounters over the batch.
+    #[serde(default)]
+    pub give_way_encounters: usize,
+    /// The share of them with a readily apparent alteration as observed.
+    #[serde(default)]
+    pub give_way_apparent_rate: Option<f64>,
+    /// The share of them whose action began early.
+    #[serde(default)]
+    pub give_way_early_rate: Option<f64>,
+    /// Runs in which ownship departed from the rules at least once (a
+    /// graded fallback plan or the evasive manoeuvre).
+    #[serde(default)]
+    pub runs_with_rule_departures: usize,
 }
 
 impl BatchSummary {
@@ -134,6 +156,10 @@ impl BatchSummary {
             })
             .collect();
         let ran: Vec<&&BatchRow> = rows.iter().filter(|row| row.error.is_empty()).collect();
+        let give_way_encounters: usize = ran.iter().map(|row| row.give_way_encounters).sum();
+        let share = |count: usize| {
+            (give_way_encounters > 0).then(|| count as f64 / give_way_encounters as f64)
+        };
         Self {
             count,
             errors: count - ran.len(),
@@ -152,6 +178,15 @@ impl BatchSummary {
             replans: Percentiles::of(ran.iter().map(|row| row.replans as f64)),
             failed_plans: rows.iter().map(|row| row.failed_plans).sum(),
             runs_with_failed_plans: rows.iter().filter(|row| row.failed_plans > 0).count(),
+            max_turn_rate_deg_s: Percentiles::of(ran.iter().map(|row| row.max_turn_rate_deg_s)),
+            turn_reversals: Percentiles::of(ran.iter().map(|row| row.turn_reversals as f64)),
+            course_change_deg_per_nm: Percentiles::of(
+                ran.iter().map(|row| row.course_change_deg_per_nm),
+            ),
+            give_way_encounters,
+            give_way_apparent_rate: share(ran.iter().map(|row| row.give_way_apparent).sum()),
+            give_way_early_rate: share(ran.iter().map(|row| row.give_way_early).sum()),
+            runs_with_rule_departures: rows.iter().filter(|row| row.rule_departures > 0).count(),
         }
     }
 
