@@ -1,7 +1,7 @@
 //! The constants of the COLREGs geometry, as one documented parameter set.
 //!
-//! Defaults follow `vorrt-paper-notes.md` ("COLREGs geometry used in the
-//! field"); each can be changed, and [`RuleParameters::validate`] says which
+//! Defaults follow the values used in the field (`docs/architecture.md`,
+//! "Decisions on the paper's errata"); each can be changed, and [`RuleParameters::validate`] says which
 //! value is out of range.
 
 use crate::error::ColregsError;

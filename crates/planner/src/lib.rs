@@ -4,7 +4,7 @@
 //! tree whose every node holds the joint state of all vessels, grown by a joint
 //! forward simulation and pruned by velocity-obstacle, closest-point-of-approach
 //! and COLREGs checks. The paper's errata are applied as
-//! `vorrt-paper-notes.md` prescribes (see `docs/architecture.md`).
+//! `docs/architecture.md` records.
 //!
 //! ## Catalogue
 //!

@@ -9,7 +9,7 @@
 //! [`EncounterLatch`] fixed when risk of collision arose, [`assess_encounter`]
 //! measures what ownship did and scores it, in the style of the evaluators of
 //! Woerner et al. (Autonomous Robots, 2019) and Minne (NTNU, 2017) described in
-//! `vorrt-paper-notes.md`, "Compliance scoring in the literature". The
+//! `docs/evaluation.md`, "Judging the track as observed". The
 //! definitions below are this crate's own; every constant is a field of
 //! [`ScoringParameters`] or [`RuleParameters`].
 //!

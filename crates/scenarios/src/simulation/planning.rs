@@ -1,0 +1,245 @@
+//! Planning in the closed loop: the plan in force, the graded fallback and
+//! the evasive manoeuvre, what is left of a plan, and when to plan again.
+
+use std::time::Instant;
+use vorrt_colregs::{EncounterLatch, VesselState};
+use vorrt_geometry::angle::signed_turn;
+use vorrt_jfs::{Leg, OwnshipModel, TargetState};
+use vorrt_planner::{
+    Compliance, Plan, PlanStatistics, Planner, PlanningProblem, Waypoint, check_legs, evasive_leg,
+};
+
+use super::target::SimulatedTarget;
+use super::{
+    EVASION_COURSES, EVASION_HORIZON_S, PlanEvent, PlanTrigger, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
+};
+
+/// The plan ownship is following, with what it assumed about the targets.
+#[derive(Debug)]
+pub(super) struct ActivePlan {
+    pub(super) plan: Plan,
+    /// When `predicted` was taken, seconds.
+    pub(super) predicted_at_s: f64,
+    pub(super) predicted: Vec<TargetState>,
+    /// Per target, every encounter the plan expects to have with it.
+    pub(super) anticipated: Vec<Vec<EncounterLatch>>,
+    /// Whether this is the evasive manoeuvre (judged against nothing; only
+    /// the retry timer ends it).
+    pub(super) evasive: bool,
+}
+
+/// What one planner call is for.
+pub(super) struct PlanCall {
+    pub(super) why: PlanTrigger,
+    pub(super) seed: u64,
+    pub(super) clearance_m: f64,
+}
+
+/// Calls the planners on `problem`, from all the rules down the graded
+/// fallback, and puts what comes of it in force: the first plan found, or on
+/// failure the previous plan if the planner's validity check still accepts
+/// it, or else the evasive leg (sailed with `model`).
+pub(super) fn plan_now(
+    planners: &mut [Planner],
+    problem: &PlanningProblem,
+    model: &OwnshipModel,
+    call: PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+    retry_at_s: &mut f64,
+) {
+    let time_s = problem.start_time_s;
+    let started = Instant::now();
+    let mut first_error = None;
+    let mut spent = PlanStatistics::default();
+    for planner in planners.iter_mut() {
+        let compliance = planner.config().compliance;
+        match planner.plan(problem, call.seed) {
+            Ok(plan) => {
+                *retry_at_s = if compliance == Compliance::Full {
+                    f64::INFINITY
+                } else {
+                    // A fallback plan is sailed until a compliant one exists.
+                    time_s + RETRY_AFTER_S
+                };
+                let mut statistics = plan.statistics;
+                statistics.elapsed_s += spent.elapsed_s;
+                plans.push(PlanEvent {
+                    time_s,
+                    trigger: call.why,
+                    seed: call.seed,
+                    succeeded: true,
+                    error: first_error.map(|error: vorrt_planner::PlannerError| error.to_string()),
+                    statistics,
+                    waypoints: plan.waypoints.clone(),
+                    evasive_course_deg: None,
+                    compliance,
+                });
+                let anticipated = plan.anticipated_encounters();
+                *active = Some(ActivePlan {
+                    plan,
+                    predicted_at_s: time_s,
+                    predicted: problem.targets.clone(),
+                    anticipated,
+                    evasive: false,
+                });
+                return;
+            }
+            Err(error) => {
+                if let Some(statistics) = error.statistics() {
+                    spent.elapsed_s += statistics.elapsed_s;
+                    if first_error.is_none() {
+                        let elapsed_s = spent.elapsed_s;
+                        spent = *statistics;
+                        spent.elapsed_s = elapsed_s;
+                    }
+                }
+                if first_error.is_none() {
+                    first_error = Some(error);
+                }
+            }
+        }
+    }
+    *retry_at_s = time_s + RETRY_AFTER_S;
+    if spent.elapsed_s == 0.0 {
+        spent.elapsed_s = started.elapsed().as_secs_f64();
+    }
+    let keep_plan = active.as_ref().is_some_and(|active| {
+        !active.evasive
+            && planners.first().is_some_and(|planner| {
+                check_legs(
+                    planner.config(),
+                    problem,
+                    &remaining_legs(&active.plan, time_s),
+                )
+                .is_ok()
+            })
+    });
+    let evasive_course_deg = if keep_plan {
+        None
+    } else {
+        let (leg, evasion) = evasive_leg(
+            problem,
+            EVASION_HORIZON_S,
+            EVASION_COURSES,
+            call.clearance_m,
+            model,
+        );
+        *active = Some(ActivePlan {
+            plan: leg_plan(leg, time_s),
+            predicted_at_s: time_s,
+            predicted: problem.targets.clone(),
+            anticipated: vec![Vec::new(); problem.targets.len()],
+            evasive: true,
+        });
+        Some(evasion.course_rad.to_degrees())
+    };
+    plans.push(PlanEvent {
+        time_s,
+        trigger: call.why,
+        seed: call.seed,
+        succeeded: false,
+        error: first_error.map(|error| error.to_string()),
+        statistics: spent,
+        waypoints: Vec::new(),
+        evasive_course_deg,
+        compliance: if keep_plan {
+            Compliance::Full
+        } else {
+            Compliance::SafetyOnly
+        },
+    });
+}
+
+/// A plan of one leg starting at `time_s` (the evasive manoeuvre).
+pub(super) fn leg_plan(leg: Leg, time_s: f64) -> Plan {
+    Plan {
+        waypoints: vec![
+            Waypoint {
+                position_m: leg.start_m,
+                time_s,
+                course_rad: leg.start_course_rad,
+            },
+            Waypoint {
+                position_m: leg.end_m(),
+                time_s: time_s + leg.duration_s(),
+                course_rad: leg.course_rad,
+            },
+        ],
+        legs: vec![leg],
+        target_states: Vec::new(),
+        encounters: Vec::new(),
+        statistics: PlanStatistics::default(),
+    }
+}
+
+/// The legs of `plan` still to sail from `time_s` on, the one under way cut
+/// at ownship's present pose.
+pub(super) fn remaining_legs(plan: &Plan, time_s: f64) -> Vec<Leg> {
+    let mut legs = Vec::new();
+    for (index, leg) in plan.legs.iter().enumerate() {
+        let (start_s, end_s) = (
+            plan.waypoints[index].time_s,
+            plan.waypoints[index + 1].time_s,
+        );
+        if end_s <= time_s {
+            continue;
+        }
+        if start_s < time_s {
+            legs.push(leg.remainder(time_s - start_s));
+        } else {
+            legs.push(*leg);
+        }
+    }
+    legs
+}
+
+/// Ownship's state at `time_s` along `plan` (at its end once the plan ends).
+pub(super) fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState {
+    match plan.pose_at(time_s) {
+        Some(pose) => VesselState {
+            position_m: pose.position_m,
+            course_rad: pose.course_rad,
+            ..*own
+        },
+        None => own.advanced(0.0),
+    }
+}
+
+/// Whether the plan in force has stopped being valid, and why.
+pub(super) fn replan_trigger(
+    active: Option<&ActivePlan>,
+    targets: &[SimulatedTarget],
+    latches: &[Option<EncounterLatch>],
+    time_s: f64,
+    deviation_m: f64,
+) -> Option<PlanTrigger> {
+    let active = active.filter(|active| !active.evasive)?;
+    let elapsed_s = time_s - active.predicted_at_s;
+    for (index, (target, predicted)) in targets.iter().zip(&active.predicted).enumerate() {
+        let expected = predicted.predict(elapsed_s).vessel.position_m;
+        if expected.distance(target.state.vessel.position_m) > deviation_m {
+            return Some(PlanTrigger::TargetOffPrediction { target: index });
+        }
+    }
+    for (index, latch) in latches.iter().enumerate() {
+        // Foreseen: the plan latched the same type against (nearly) the same
+        // reference course, so its COLREGs checks are the ones in force.
+        let foreseen = |actual: &EncounterLatch| {
+            active.anticipated.get(index).is_none_or(|expected| {
+                expected.iter().any(|planned| {
+                    planned.encounter == actual.encounter
+                        && signed_turn(planned.reference_course_rad, actual.reference_course_rad)
+                            .abs()
+                            <= REFERENCE_MATCH_RAD
+                })
+            })
+        };
+        if let Some(latch) = latch
+            && !foreseen(latch)
+        {
+            return Some(PlanTrigger::NewEncounter { target: index });
+        }
+    }
+    None
+}

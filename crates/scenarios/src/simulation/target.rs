@@ -1,0 +1,227 @@
+//! The targets as the closed loop moves them, by their behaviour, and how
+//! ownship predicts them (from what they announce and are seen doing).
+
+use super::OBSERVED_TURN_RAD;
+use crate::scenario::{Behaviour, COLREGS_TURN_DEG, NOISE_TIME_CONSTANT_S};
+use rand_chacha::ChaCha8Rng;
+use rand_core::{RngCore, SeedableRng};
+use vorrt_colregs::{EncounterLatch, Role, RuleParameters, VesselState, update_latch};
+use vorrt_geometry::angle::signed_turn;
+use vorrt_geometry::{angle, units};
+use vorrt_jfs::TargetState;
+
+/// One target as the simulation moves it.
+#[derive(Debug, Clone)]
+pub(super) struct SimulatedTarget {
+    /// Where it is now; `goal_m` is the goal it steers for (`None` once a
+    /// [`Behaviour::SuddenTurn`] target has turned, or without a goal).
+    pub(super) state: TargetState,
+    pub(super) behaviour: Behaviour,
+    /// The speed it announces and returns to, m/s.
+    pub(super) nominal_speed_mps: f64,
+    /// The course it holds when it has no goal, radians.
+    pub(super) nominal_course_rad: f64,
+    /// The noise stream of a [`Behaviour::Noisy`] target.
+    pub(super) noise: Option<ChaCha8Rng>,
+    pub(super) course_offset_rad: f64,
+    pub(super) speed_offset_mps: f64,
+    /// A [`Behaviour::Colregs`] target's encounter with ownship, from its side.
+    pub(super) latch: Option<EncounterLatch>,
+    /// The course a giving-way [`Behaviour::Colregs`] target holds.
+    pub(super) avoiding_course_rad: Option<f64>,
+    /// Whether a [`Behaviour::SuddenTurn`] target has turned.
+    pub(super) turned: bool,
+}
+
+/// The seed of target `index`'s noise stream in a run seeded with `seed`.
+pub(super) fn noise_stream(seed: u64, index: usize) -> ChaCha8Rng {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6E6F_6973_795F_7467);
+    rng.set_stream(index as u64);
+    rng
+}
+
+/// A standard normal draw (Box-Muller) from `rng`.
+fn standard_normal(rng: &mut ChaCha8Rng) -> f64 {
+    // 53 random bits in (0, 1].
+    let unit = |rng: &mut ChaCha8Rng| ((rng.next_u64() >> 11) as f64 + 1.0) / (1u64 << 53) as f64;
+    let (u1, u2) = (unit(rng), unit(rng));
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+}
+
+impl SimulatedTarget {
+    pub(super) fn new(spec: &crate::VesselSpec, index: usize, seed: u64) -> Self {
+        let state = match spec.behaviour {
+            Behaviour::ConstantVelocity => TargetState::constant_velocity(spec.state()),
+            _ => spec.target_state(),
+        };
+        let noise =
+            matches!(spec.behaviour, Behaviour::Noisy { .. }).then(|| noise_stream(seed, index));
+        Self {
+            state,
+            behaviour: spec.behaviour,
+            nominal_speed_mps: spec.speed_mps(),
+            nominal_course_rad: state.vessel.course_rad,
+            noise,
+            course_offset_rad: 0.0,
+            speed_offset_mps: 0.0,
+            latch: None,
+            avoiding_course_rad: None,
+            turned: false,
+        }
+    }
+
+    /// Moves the target from `time_s` on by `duration_s`; `own` is ownship at
+    /// `time_s`.
+    pub(super) fn advance(
+        &mut self,
+        duration_s: f64,
+        time_s: f64,
+        own: &VesselState,
+        rules: &RuleParameters,
+    ) {
+        match self.behaviour {
+            Behaviour::SuddenTurn { at_s, turn_deg } => {
+                if !self.turned && time_s + duration_s >= at_s {
+                    let before_s = (at_s - time_s).max(0.0);
+                    self.state = self.state.predict(before_s);
+                    let mut vessel = self.state.vessel;
+                    vessel.course_rad =
+                        angle::normalize_2pi(vessel.course_rad + turn_deg.to_radians());
+                    self.state = TargetState::constant_velocity(vessel);
+                    self.turned = true;
+                    self.state = self.state.predict(duration_s - before_s);
+                } else {
+                    self.state = self.state.predict(duration_s);
+                }
+            }
+            Behaviour::Noisy {
+                course_sigma_deg,
+                speed_sigma_kn,
+            } => {
+                if let Some(rng) = self.noise.as_mut() {
+                    let decay = (-duration_s / NOISE_TIME_CONSTANT_S).exp();
+                    let spread = (1.0 - decay * decay).max(0.0).sqrt();
+                    let course_sigma = course_sigma_deg.to_radians();
+                    let speed_sigma = units::knots_to_mps(speed_sigma_kn);
+                    self.course_offset_rad = decay * self.course_offset_rad
+                        + course_sigma * spread * standard_normal(rng);
+                    self.speed_offset_mps =
+                        decay * self.speed_offset_mps + speed_sigma * spread * standard_normal(rng);
+                }
+                let course = self.intended_course_rad() + self.course_offset_rad;
+                let speed = (self.nominal_speed_mps + self.speed_offset_mps).max(0.0);
+                self.steer(course, speed, duration_s);
+            }
+            Behaviour::Colregs => {
+                self.latch = update_latch(self.latch, &self.state.vessel, own, time_s, rules);
+                match self.latch {
+                    Some(latch) if latch.encounter.role() == Role::GiveWay => {
+                        if self.avoiding_course_rad.is_none() {
+                            self.avoiding_course_rad = Some(angle::normalize_2pi(
+                                latch.reference_course_rad + COLREGS_TURN_DEG.to_radians(),
+                            ));
+                        }
+                    }
+                    _ => self.avoiding_course_rad = None,
+                }
+                let course = self
+                    .avoiding_course_rad
+                    .unwrap_or_else(|| self.intended_course_rad());
+                self.steer(course, self.nominal_speed_mps, duration_s);
+            }
+            _ => self.state = self.state.predict(duration_s),
+        }
+    }
+
+    /// The course the target would steer undisturbed: for its goal, or its
+    /// nominal course without one.
+    fn intended_course_rad(&self) -> f64 {
+        match self.state.goal_m {
+            Some(goal) if goal != self.state.vessel.position_m => {
+                angle::unit_to_course(goal - self.state.vessel.position_m)
+            }
+            Some(_) => self.state.vessel.course_rad,
+            None => self.nominal_course_rad,
+        }
+    }
+
+    /// Sails `duration_s` at `course_rad` and `speed_mps`, stopping on the
+    /// goal if it comes within reach.
+    fn steer(&mut self, course_rad: f64, speed_mps: f64, duration_s: f64) {
+        let vessel = &mut self.state.vessel;
+        if self.state.goal_m == Some(vessel.position_m) {
+            vessel.speed_mps = 0.0;
+            return;
+        }
+        vessel.course_rad = angle::normalize_2pi(course_rad);
+        vessel.speed_mps = speed_mps;
+        let travel_m = speed_mps * duration_s;
+        match self.state.goal_m {
+            Some(goal) if vessel.position_m.distance(goal) <= travel_m => {
+                vessel.position_m = goal;
+                vessel.speed_mps = 0.0;
+            }
+            _ => vessel.position_m += angle::velocity(vessel.course_rad, speed_mps) * duration_s,
+        }
+    }
+
+    /// How ownship predicts the target: from what it broadcasts (AIS: course,
+    /// speed, destination) and what it is seen doing. A goal-bound target is
+    /// predicted steering for its goal at its nominal speed, unless it is
+    /// seen more than [`OBSERVED_TURN_RAD`] off that course: then it is
+    /// predicted holding the course it is on. Any other target holds its
+    /// course at its nominal speed (its present course and speed for the
+    /// constant-motion behaviours).
+    pub(super) fn announced(&self) -> TargetState {
+        let vessel = self.state.vessel;
+        match self.behaviour {
+            Behaviour::ConstantToGoal | Behaviour::ConstantVelocity => match self.state.goal_m {
+                Some(goal) => TargetState {
+                    vessel,
+                    goal_m: Some(goal),
+                },
+                None => TargetState::constant_velocity(vessel),
+            },
+            _ => match self.state.goal_m {
+                // A turn seen over ground updates the prediction: a target
+                // well off the course to its destination is predicted to hold
+                // the course it is seen on (it is giving way, or has changed
+                // its mind), as AIS and radar show it.
+                Some(goal)
+                    if !self.state.has_arrived()
+                        && signed_turn(
+                            angle::unit_to_course(goal - vessel.position_m),
+                            vessel.course_rad,
+                        )
+                        .abs()
+                            > OBSERVED_TURN_RAD =>
+                {
+                    TargetState::constant_velocity(VesselState {
+                        speed_mps: self.nominal_speed_mps,
+                        ..vessel
+                    })
+                }
+                Some(goal) => {
+                    let speed_mps = if self.state.has_arrived() {
+                        0.0
+                    } else {
+                        self.nominal_speed_mps
+                    };
+                    TargetState::toward_goal(
+                        VesselState {
+                            speed_mps,
+                            ..vessel
+                        },
+                        goal,
+                    )
+                }
+                None if self.turned => TargetState::constant_velocity(vessel),
+                None => TargetState::constant_velocity(VesselState {
+                    course_rad: self.nominal_course_rad,
+                    speed_mps: self.nominal_speed_mps,
+                    ..vessel
+                }),
+            },
+        }
+    }
+}
