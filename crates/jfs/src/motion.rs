@@ -32,7 +32,7 @@ pub const DEFAULT_TURN_RADIUS_LENGTHS: f64 = 3.0;
 
 /// The largest default rate of turn, radians per second (0.5°/s): ships
 /// alter course at about 0.2-0.5°/s (an autopilot's rate-of-turn limit; the
-/// practical rate 0.96 V[kn] / R[nm] °/min is 0.48°/s at 15 kn on a 0.5 nm
+/// practical rate 0.96 V / R °/min, V in kn and R in nm, is 0.48°/s at 15 kn on a 0.5 nm
 /// radius), well inside their hard-over rates (about 0.5-1.5°/s for 100-200 m
 /// ships); small craft could turn faster, but this is what other vessels and
 /// evaluators expect of an alteration of course.
