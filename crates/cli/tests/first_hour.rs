@@ -179,7 +179,7 @@ fn a_30_nm_route_plans_with_default_settings() {
         temp.path(),
         "fixed.ron",
         &Spec {
-            extra: "planner: (nodes_per_route_step: 0.0),",
+            extra: "planner: (nodes_per_route_step: 0.0, instant_turns: true),",
             ..LONG
         },
     );

@@ -175,6 +175,16 @@ impl Planner {
                 &root_latches,
                 &root_alterations,
             );
+            // The manoeuvre a mariner would make (one alteration held, then
+            // the goal), when it is valid, needs no tree at all.
+            statistics.nodes = 1;
+            if attempt == 0
+                && own.position_m != problem.goal_m
+                && let Some(mut plan) = self.extract(problem, 0, &mut statistics)
+            {
+                plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
+                return Ok(plan);
+            }
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
             } else {
@@ -334,7 +344,9 @@ impl Planner {
 
     /// The plan along the branch to `node`: the branch itself for
     /// instantaneous turns, else its simplification into sailable legs
-    /// (`None` when there is none).
+    /// (`None` when there is none). For the root alone (`node` 0, short of
+    /// the goal) with rate-limited turns, the manoeuvre search of
+    /// [`simplify`] from the start: one alteration held, then the goal.
     fn extract(
         &self,
         problem: &PlanningProblem,
@@ -347,6 +359,10 @@ impl Planner {
             .config
             .turning
             .max_turn_rate_rad_s(own.length_m, own.speed_mps);
+        if node == 0 && own.position_m != problem.goal_m {
+            // Not a branch to the goal: only the manoeuvre search applies.
+            rate?;
+        }
         let legs: Vec<SimplifiedLeg> = match rate {
             None => branch
                 .windows(2)
@@ -380,10 +396,14 @@ impl Planner {
                     problem.goal_m,
                     problem.start_time_s,
                 );
-                let points: Vec<DVec2> = branch[1..]
-                    .iter()
-                    .map(|&index| self.tree.positions[index as usize])
-                    .collect();
+                let points: Vec<DVec2> = if node == 0 {
+                    vec![problem.goal_m]
+                } else {
+                    branch[1..]
+                        .iter()
+                        .map(|&index| self.tree.positions[index as usize])
+                        .collect()
+                };
                 let root = EncounterState {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),

@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::units;
-use vorrt_planner::{NearestIndex, PlannerConfig, PlannerError};
+use vorrt_planner::{NearestIndex, PlannerConfig, PlannerError, Turning};
 
 /// Planner settings as a scenario file gives them (written `Planner(...)` or
 /// just `(...)` in RON). Every field is optional; an absent field keeps the
@@ -95,6 +95,11 @@ pub struct PlannerSettings {
     /// Course change that is "readily apparent", degrees (default 30).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub apparent_turn_deg: Option<f64>,
+    /// `true`: the paper's instantaneous turns, the plan being the tree's
+    /// branch (default `false`: turns at ownship's rate of turn, the branch
+    /// simplified into legs).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub instant_turns: Option<bool>,
 }
 
 impl PlannerSettings {
@@ -188,6 +193,9 @@ impl PlannerSettings {
         }
         if let Some(index) = self.nearest_index {
             config.nearest_index = index;
+        }
+        if self.instant_turns == Some(true) {
+            config.turning = Turning::Instant;
         }
         let rules = &mut config.rules;
         set(&mut rules.mtd_m, self.mtd_nm, units::nautical_miles_to_m);
@@ -337,6 +345,7 @@ mod tests {
             stand_on_speed_tolerance_kn: Some(2.0),
             stand_on_action_range_nm: Some(1.5),
             apparent_turn_deg: Some(35.0),
+            instant_turns: Some(true),
         };
         assert_eq!(settings.set_numbers().len(), 20);
         let config = settings.apply_to(PlannerConfig::default());
@@ -345,6 +354,7 @@ mod tests {
         assert_eq!(config.step_m, 50.0);
         assert_eq!(config.goal_tolerance_m, 60.0);
         assert_eq!(config.nodes_per_route_step, 4.0);
+        assert_eq!(config.turning, Turning::Instant);
         assert_eq!(config.goal_bias, 0.3);
         assert_eq!(config.phase_two_goal_bias, 0.1);
         assert_eq!(config.nodes_per_phase, 600);

@@ -123,6 +123,13 @@ pub struct VesselSpec {
     /// The vessel's MMSI (AIS identity), when known.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mmsi: Option<u32>,
+    /// The vessel's largest rate of turn, degrees per second. For ownship it
+    /// bounds every turn the planner plans and the closed loop sails; unset,
+    /// it comes from the length and speed (`vorrt_jfs::default_turn_rate_rad_s`).
+    /// Targets turn as their behaviour says (instantaneously in this
+    /// simulation), so on a target it is checked but not used.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_turn_rate_deg_s: Option<f64>,
     /// `start_lat_lon` and `goal_lat_lon` in the scenario's local frame:
     /// derived by [`Scenario::validate`], not part of the file.
     #[serde(skip)]
@@ -153,6 +160,7 @@ impl VesselSpec {
             start_lat_lon: None,
             goal_lat_lon: None,
             mmsi: None,
+            max_turn_rate_deg_s: None,
             projected: ProjectedPositions::default(),
         }
     }

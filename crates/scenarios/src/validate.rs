@@ -5,8 +5,8 @@ use crate::planner_settings::describe_config_error;
 use crate::scenario::{Lane, Scenario, VesselSpec};
 use vorrt_colregs::rules;
 use vorrt_geometry::DVec2;
-use vorrt_planner::PlannerConfig;
 use vorrt_planner::error::Readable;
+use vorrt_planner::{PlannerConfig, Turning};
 
 /// The most targets one scenario may hold.
 pub const MAX_TARGETS: usize = 256;
@@ -158,7 +158,14 @@ impl Scenario {
                 ));
             }
         }
-        let config = self.planner.apply_to(PlannerConfig::default());
+        let mut config = self.planner.apply_to(PlannerConfig::default());
+        if let Some(rate) = self.ownship.max_turn_rate_deg_s
+            && config.turning != Turning::Instant
+        {
+            config.turning = Turning::MaxRate {
+                max_turn_rate_rad_s: rate.to_radians(),
+            };
+        }
         config
             .validate()
             .map_err(|error| describe_config_error(&error))?;
@@ -320,8 +327,23 @@ fn normalise_course_deg(course_deg: f64) -> f64 {
     if course >= 360.0 { 0.0 } else { course }
 }
 
+/// The fastest rate of turn a vessel may give, degrees per second (a
+/// planing craft turns at well under 30°/s).
+pub const MAX_TURN_RATE_DEG_S: f64 = 30.0;
+
 fn check_vessel(vessel: &mut VesselSpec, who: Who<'_>) -> Result<(), (String, String)> {
     check_name(&vessel.name).map_err(|problem| (who.field("name"), problem))?;
+    if let Some(rate) = vessel.max_turn_rate_deg_s
+        && !(rate.is_finite() && rate > 0.0 && rate <= MAX_TURN_RATE_DEG_S)
+    {
+        return Err((
+            who.field("max_turn_rate_deg_s"),
+            format!(
+                "is {}, expected a rate of turn greater than 0 and at most {MAX_TURN_RATE_DEG_S} °/s",
+                Readable(rate)
+            ),
+        ));
+    }
     let m_to_nm = 1.0 / vorrt_geometry::units::NAUTICAL_MILE_M;
     check_position(who, "start_nm", vessel.start_nm, 1.0)?;
     check_position(who, "start_m", vessel.start_m, m_to_nm)?;

@@ -118,8 +118,11 @@ fn when_planning_fails_ownship_evades_instead_of_holding_course() {
     scenario.planner.nodes_per_phase = Some(1);
     scenario.planner.samples_per_phase = Some(1);
     scenario.planner.max_restarts = Some(0);
-    // Budgets that do not grow with the route.
+    // Budgets that do not grow with the route, and the tree alone (the
+    // manoeuvre search that precedes it with rate-limited turns would find
+    // this one).
     scenario.planner.nodes_per_route_step = Some(0.0);
+    scenario.planner.instant_turns = Some(true);
     let record = simulate(&scenario, 1).expect("valid settings");
     assert!(record.plans.iter().all(|event| !event.succeeded));
     let evasions: Vec<f64> = record

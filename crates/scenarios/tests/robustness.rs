@@ -121,6 +121,7 @@ impl Gen {
             start_lat_lon: None,
             goal_lat_lon: None,
             mmsi: None,
+            max_turn_rate_deg_s: self.opt(-1.0, 5.0),
             projected: Default::default(),
         }
     }
