@@ -493,13 +493,13 @@ fn irregular_time_stamps_are_resampled_and_gaps_reported() {
     // Ownship every 3 s with a 200 s gap; the target every 7 s, from 14 s.
     for (time_s, east, north, _) in &own_track {
         let t = *time_s as usize;
-        if t % 3 == 0 && !(600..800).contains(&t) {
+        if t.is_multiple_of(3) && !(600..800).contains(&t) {
             text_csv += &format!("{time_s},own,{east},{north}\n");
         }
     }
     for (time_s, east, north, _) in &target_track {
         let t = *time_s as usize;
-        if t % 7 == 0 && t >= 14 {
+        if t.is_multiple_of(7) && t >= 14 {
             text_csv += &format!("{time_s},T,{east},{north}\n");
         }
     }
