@@ -153,6 +153,20 @@ pub(crate) fn table(judgement: &Judgement) -> String {
         "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
         report.path_length_m, report.straight_length_m, report.path_overhead_pct
     );
+    let quality = &report.path_quality;
+    let _ = writeln!(
+        text,
+        "path quality:   largest rate of turn {:.2}°/s{}, {} turn reversals, {:.1}° of course change per nm",
+        quality.max_turn_rate_deg_s,
+        quality
+            .turn_rate_limit_deg_s
+            .map_or_else(String::new, |limit| format!(" (limit {limit:.2}°/s)")),
+        quality.turn_reversals,
+        quality.course_change_deg_per_nm
+    );
+    for finding in &quality.findings {
+        let _ = writeln!(text, "                - {finding}");
+    }
     let _ = writeln!(
         text,
         "verdict:        {}",
