@@ -180,7 +180,7 @@ fn crossing() -> Vessel {
 
 #[test]
 fn head_on_early_starboard_turn_is_safe_and_compliant() {
-    let own = ownship().turning(&[turn(180.0, 40.0, 0.5)]);
+    let own = ownship().turning(&[turn(180.0, 40.0, 0.4)]);
     let (code, judgement) = judge(&[own, head_on()], true);
     assert_eq!(target(&judgement)["encounter"], "head_on");
     assert_eq!(code, 0, "{}", violations(&judgement));
@@ -189,7 +189,7 @@ fn head_on_early_starboard_turn_is_safe_and_compliant() {
 
 #[test]
 fn head_on_port_turn_is_a_violation() {
-    let own = ownship().turning(&[turn(180.0, -40.0, 0.5)]);
+    let own = ownship().turning(&[turn(180.0, -40.0, 0.4)]);
     let (code, judgement) = judge(&[own, head_on()], true);
     assert_eq!(code, 1);
     assert_eq!(target(&judgement)["compliant"], false);
@@ -203,7 +203,7 @@ fn head_on_port_turn_is_a_violation() {
 #[test]
 fn head_on_late_starboard_turn_is_late() {
     // Begun at 1.2 nm, where risk arose at 5 nm.
-    let own = ownship().turning(&[turn(720.0, 40.0, 0.8)]);
+    let own = ownship().turning(&[turn(720.0, 40.0, 0.45)]);
     let (code, judgement) = judge(&[own, head_on()], true);
     assert_eq!(code, 1, "{}", violations(&judgement));
     assert!(
@@ -215,7 +215,7 @@ fn head_on_late_starboard_turn_is_late() {
 
 #[test]
 fn crossing_astern_is_compliant() {
-    let own = ownship().turning(&[turn(240.0, 60.0, 0.5)]);
+    let own = ownship().turning(&[turn(240.0, 60.0, 0.4)]);
     let (code, judgement) = judge(&[own, crossing()], true);
     assert_eq!(target(&judgement)["encounter"], "crossing_give_way");
     assert_eq!(code, 0, "{}", violations(&judgement));
@@ -223,7 +223,7 @@ fn crossing_astern_is_compliant() {
 
 #[test]
 fn crossing_ahead_is_a_violation() {
-    let own = ownship().turning(&[turn(240.0, -30.0, 0.5)]);
+    let own = ownship().turning(&[turn(240.0, -30.0, 0.4)]);
     let (code, judgement) = judge(&[own, crossing()], true);
     assert_eq!(code, 1);
     let found = violations(&judgement);
@@ -236,7 +236,7 @@ fn crossing_ahead_is_a_violation() {
 /// A target from the port bow that gives way (60° to starboard, passing
 /// astern of ownship).
 fn give_way_from_port() -> Vessel {
-    vessel("T", (-4.0, 4.0), 90.0, 12.0).turning(&[turn(240.0, 60.0, 0.5)])
+    vessel("T", (-4.0, 4.0), 90.0, 12.0).turning(&[turn(240.0, 60.0, 0.4)])
 }
 
 #[test]
@@ -248,7 +248,7 @@ fn stand_on_holding_course_is_compliant() {
 
 #[test]
 fn stand_on_turning_to_port_is_a_violation() {
-    let own = ownship().turning(&[turn(200.0, -40.0, 0.5)]);
+    let own = ownship().turning(&[turn(200.0, -40.0, 0.4)]);
     let (code, judgement) = judge(&[own, give_way_from_port()], true);
     assert_eq!(code, 1);
     assert!(
@@ -261,7 +261,7 @@ fn stand_on_turning_to_port_is_a_violation() {
 #[test]
 fn overtaking_with_an_early_alteration_is_compliant() {
     let slow = vessel("T", (0.0, 3.0), 0.0, 6.0);
-    let own = ownship().turning(&[turn(60.0, 35.0, 0.5)]);
+    let own = ownship().turning(&[turn(60.0, 35.0, 0.4)]);
     let (code, judgement) = judge(&[own, slow], true);
     assert_eq!(target(&judgement)["encounter"], "overtaking");
     assert_eq!(code, 0, "{}", violations(&judgement));
@@ -270,11 +270,11 @@ fn overtaking_with_an_early_alteration_is_compliant() {
 #[test]
 fn a_zig_zag_of_small_alterations_is_a_violation() {
     let own = ownship().turning(&[
-        turn(180.0, 15.0, 0.5),
-        turn(300.0, -10.0, 0.5),
-        turn(420.0, 15.0, 0.5),
-        turn(540.0, -10.0, 0.5),
-        turn(660.0, 15.0, 0.5),
+        turn(180.0, 15.0, 0.4),
+        turn(300.0, -10.0, 0.4),
+        turn(420.0, 15.0, 0.4),
+        turn(540.0, -10.0, 0.4),
+        turn(660.0, 15.0, 0.4),
     ]);
     let (code, judgement) = judge(&[own, vessel("T", (0.3, 6.0), 180.0, 12.0)], true);
     assert_eq!(code, 1);
@@ -287,7 +287,7 @@ fn a_zig_zag_of_small_alterations_is_a_violation() {
 
 #[test]
 fn a_turn_faster_than_the_ship_can_is_a_finding() {
-    // 5°/s, where a 100 m ship at 12 kn turns at most 1°/s.
+    // 5°/s, where a 100 m ship at 12 kn turns at most 0.5°/s.
     let own = ownship().turning(&[turn(180.0, 40.0, 5.0)]);
     let (code, judgement) = judge(&[own, head_on()], true);
     assert_eq!(code, 1);
@@ -297,11 +297,11 @@ fn a_turn_faster_than_the_ship_can_is_a_finding() {
 
 #[test]
 fn courses_and_speeds_come_from_the_track_when_the_file_has_none() {
-    let own = ownship().turning(&[turn(180.0, 40.0, 0.5)]);
+    let own = ownship().turning(&[turn(180.0, 40.0, 0.4)]);
     let (code, judgement) = judge(&[own, head_on()], false);
     assert_eq!(code, 0, "{}", violations(&judgement));
     assert_eq!(judgement["input"]["vessels"][0]["courses_from"], "track");
-    let own = ownship().turning(&[turn(180.0, -40.0, 0.5)]);
+    let own = ownship().turning(&[turn(180.0, -40.0, 0.4)]);
     let (code, _) = judge(&[own, head_on()], false);
     assert_eq!(code, 1);
 }
@@ -486,7 +486,7 @@ fn reads_the_geojson_vorrt_writes_and_an_ais_log() {
 
 #[test]
 fn irregular_time_stamps_are_resampled_and_gaps_reported() {
-    let own = ownship().turning(&[turn(180.0, 40.0, 0.5)]);
+    let own = ownship().turning(&[turn(180.0, 40.0, 0.4)]);
     let target = head_on();
     let (own_track, target_track) = (own.track(1500.0, 1.0), target.track(1500.0, 1.0));
     let mut text_csv = "time_s,vessel,east_m,north_m\n".to_owned();
