@@ -9,9 +9,11 @@ use std::path::PathBuf;
 
 const EXIT_CODES: &str = "\
 Exit codes:
-  0  success (simulate/demo: every run reached its goal safely; plan: a safe path was found; check: every file is valid)
+  0  success (simulate/demo: every run reached its goal safely; plan: a safe path was found; check: every file is valid;
+     judge: the tracks are safe and compliant)
   1  the planner found no safe path, or a run did not reach its goal safely
-     (goal not reached, a collision, or the clearance d_th broken)
+     (goal not reached, a collision, or the clearance d_th broken); judge: a collision,
+     d_th broken or a COLREGs finding
   2  bad input or usage: an unreadable or invalid scenario file, a wrong option,
      an output folder that cannot be written";
 
@@ -122,6 +124,18 @@ pub(crate) enum Command {
     /// docs/real-data.md.
     #[command(after_help = EXIT_CODES)]
     ImportAis(crate::import_ais::ImportAisArgs),
+    /// Judge recorded tracks (any planner's) against COLREGs, as the
+    /// project's own evaluation judges a run.
+    ///
+    /// Reads trajectory.csv (as `simulate` writes it), GeoJSON LineStrings
+    /// with per-point times, or an AIS log; puts every vessel on one clock
+    /// (docs/judge.md); judges safety, every rule's duties and path quality
+    /// with the same evaluation as `simulate`; prints a table and writes
+    /// DIR/judgement.json and the trajectory and distance plots. Exits 0
+    /// when the tracks are safe (no collision, d_th kept) and compliant, 1
+    /// when not, 2 on bad input.
+    #[command(after_help = EXIT_CODES)]
+    Judge(crate::judge::JudgeArgs),
     /// Merge the outputs of the shards of one batch into one rows.csv,
     /// summary.json, run.json and plots; refuses shards of different
     /// batches and warns about missing shards.

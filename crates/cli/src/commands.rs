@@ -42,6 +42,7 @@ pub(crate) fn run(cli: Cli) -> Result<ExitStatus, CliError> {
         Command::Generate(args) => batch::generate_command(&args),
         Command::Merge(args) => batch::merge_command(&args),
         Command::ImportAis(args) => crate::import_ais::import_ais_command(&args),
+        Command::Judge(args) => crate::judge::judge_command(&args),
     }
 }
 

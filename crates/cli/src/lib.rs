@@ -2,8 +2,9 @@
 //!
 //! The `vorrt` command line: run a scenario in closed loop and report on it
 //! (`simulate`), plan once from the start (`plan`), validate scenario files
-//! (`check`), run every bundled scenario into an HTML page (`demo`), and run
-//! Monte Carlo campaigns (`batch`, `generate`, `merge`).
+//! (`check`), run every bundled scenario into an HTML page (`demo`), run
+//! Monte Carlo campaigns (`batch`, `generate`, `merge`), and judge any
+//! planner's recorded tracks (`judge`).
 //!
 //! Its only public parts are [`main_entry`], the whole program, and
 //! [`report`], the stable `report.json` and `plan` output schemas (see
@@ -21,6 +22,7 @@
 //! | `progress` | progress on stderr for long runs |
 //! | `export` | `trajectory.csv`, `trajectory.geojson`, `trajectory.gpx`; the plan as GeoJSON or GPX |
 //! | `demo`, `batch`, `import_ais` | `vorrt demo`; `vorrt batch`, `generate` and `merge`; `import-ais`: an AIS log into a geographic scenario |
+//! | `judge` | `vorrt judge`: recorded tracks judged by the project's evaluation |
 //! | `commands` | what each subcommand does |
 //!
 //! The workspace root package's `vorrt` binary (`cargo run --release -- demo`
@@ -40,6 +42,7 @@ mod export;
 mod fixtures;
 mod font;
 mod import_ais;
+mod judge;
 mod plot;
 mod progress;
 pub mod report;

@@ -1,0 +1,180 @@
+//! What `vorrt judge` writes: `judgement.json` (the report of
+//! `report.json` with the judge's `input` section) and the console table.
+
+use crate::judge::build::Input;
+use crate::report::Report;
+use serde::{Deserialize, Serialize};
+
+/// `judgement.json`: every field of `report.json` (the planner fields are
+/// zero: no planner ran), `safe_and_compliant`, and how the tracks were read.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub(crate) struct Judgement {
+    /// The judgement in the report's schema (`docs/report-format.md`).
+    #[serde(flatten)]
+    pub(crate) report: Report,
+    /// No collision, d_th kept and no COLREGs finding: exit code 0.
+    pub(crate) safe_and_compliant: bool,
+    /// How the tracks were read, resampled and completed.
+    pub(crate) input: Input,
+}
+
+impl Judgement {
+    /// The judgement of `report`, read as `input` says.
+    pub(crate) fn new(report: Report, input: Input) -> Self {
+        let safe_and_compliant = !report.collision && report.clearance_kept && report.compliant;
+        Self {
+            report,
+            safe_and_compliant,
+            input,
+        }
+    }
+}
+
+fn yes_no(value: bool) -> &'static str {
+    if value { "yes" } else { "NO" }
+}
+
+/// The table `vorrt judge` prints.
+pub(crate) fn table(judgement: &Judgement) -> String {
+    use std::fmt::Write as _;
+    let report = &judgement.report;
+    let input = &judgement.input;
+    let mut text = String::new();
+    let _ = writeln!(
+        text,
+        "judging {} ({}), ownship {:?}, against {}; d_th = {:.0} m",
+        input.tracks_file,
+        input.tracks_format,
+        input.ownship,
+        input
+            .scenario_file
+            .as_deref()
+            .unwrap_or("a scenario synthesized from the tracks"),
+        report.d_th_m
+    );
+    let clock = &input.clock;
+    let _ = writeln!(
+        text,
+        "clock: {} samples from {:.1} s to {:.1} s, {} {:.2} s",
+        clock.samples,
+        clock.from_s,
+        clock.to_s,
+        if clock.resampled {
+            "resampled every"
+        } else {
+            "the file's own time stamps, median step"
+        },
+        clock.step_s
+    );
+    for line in input
+        .assumptions
+        .iter()
+        .map(|a| format!("assumed: {a}"))
+        .chain(input.left_out.iter().map(|l| format!("not judged: {l}")))
+        .chain(input.gaps.iter().map(|gap| {
+            format!(
+                "gap: {:?} has no fix from {:.0} s to {:.0} s ({:.0} s > {:.0} s), bridged by a straight line",
+                gap.vessel,
+                gap.from_s,
+                gap.to_s,
+                gap.to_s - gap.from_s,
+                input.max_gap_s
+            )
+        }))
+    {
+        let _ = writeln!(text, "  {line}");
+    }
+    let name_width = report
+        .targets
+        .iter()
+        .map(|target| target.name.chars().count())
+        .chain([6])
+        .max()
+        .unwrap_or(6);
+    let _ = writeln!(
+        text,
+        "\n{:<name_width$}  {:<17}  {:<8}  {:>10}  {:>10}  {:<9}  {:>5}",
+        "target", "encounter", "role", "min dist m", "at min", "compliant", "score"
+    );
+    for target in &report.targets {
+        let _ = writeln!(
+            text,
+            "{:<name_width$}  {:<17}  {:<8}  {:>10.1}  {:>6.1} min  {:<9}  {:>5.2}",
+            target.name,
+            target.encounter,
+            target.role,
+            target.min_distance_m,
+            target.time_of_min_s / 60.0,
+            yes_no(target.compliant),
+            target.score
+        );
+        for violation in &target.violations {
+            let _ = writeln!(text, "{:<name_width$}    - {violation}", "");
+        }
+    }
+    if report.targets.is_empty() {
+        let _ = writeln!(text, "(no targets)");
+    }
+    let _ = writeln!(text);
+    let _ = writeln!(
+        text,
+        "collision:      {}",
+        if report.collision { "YES" } else { "no" }
+    );
+    let minimum = match report.min_distance_m {
+        Some(distance) => format!(
+            "{distance:.1} m vs d_th {:.0} m: {}",
+            report.d_th_m,
+            if report.clearance_kept {
+                "kept"
+            } else {
+                "BROKEN"
+            }
+        ),
+        None => "- (no targets)".to_owned(),
+    };
+    let _ = writeln!(text, "min distance:   {minimum}");
+    let _ = writeln!(
+        text,
+        "COLREGs:        {}",
+        if report.compliant {
+            "compliant"
+        } else {
+            "violated"
+        }
+    );
+    let arrival = match report.arrival_time_s {
+        Some(time_s) => format!("yes, at {:.1} min", time_s / 60.0),
+        None => format!("no (not within {:.0} m of it)", input.goal_tolerance_m),
+    };
+    let _ = writeln!(text, "reached goal:   {arrival}");
+    let _ = writeln!(
+        text,
+        "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
+        report.path_length_m, report.straight_length_m, report.path_overhead_pct
+    );
+    let quality = &report.path_quality;
+    let _ = writeln!(
+        text,
+        "path quality:   largest rate of turn {:.2}°/s{}, {} turn reversals, {:.1}° of course change per nm",
+        quality.max_turn_rate_deg_s,
+        quality
+            .turn_rate_limit_deg_s
+            .map_or_else(String::new, |limit| format!(" (limit {limit:.2}°/s)")),
+        quality.turn_reversals,
+        quality.course_change_deg_per_nm
+    );
+    for finding in &quality.findings {
+        let _ = writeln!(text, "                - {finding}");
+    }
+    let _ = writeln!(
+        text,
+        "verdict:        {}",
+        if judgement.safe_and_compliant {
+            "safe and compliant"
+        } else {
+            "NOT safe and compliant"
+        }
+    );
+    text
+}

@@ -1,0 +1,416 @@
+//! Every vessel onto one clock: the judged interval (where ownship and the
+//! targets were all observed), the common time step, linear interpolation
+//! without extrapolation, and the gaps too long to trust. The rules are in
+//! `docs/judge.md`, "Resampling".
+
+use crate::error::CliError;
+use crate::judge::tracks::{Place, Track};
+use serde::{Deserialize, Serialize};
+use vorrt_geometry::{DVec2, angle, units};
+use vorrt_scenarios::LocalFrame;
+
+/// The most samples (vessels times clock ticks) the judge resamples to.
+pub(crate) const MAX_SAMPLES: usize = 20_000_000;
+
+/// A target judged with ownship must keep the judged interval at least this
+/// fraction of ownship's own observed span.
+pub(crate) const MIN_INTERVAL_FRACTION: f64 = 0.5;
+
+/// One vessel's fixes in the local frame, sorted by time, one per time.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Prepared {
+    /// The vessel's name.
+    pub(crate) name: String,
+    /// Fix times, strictly increasing, seconds.
+    pub(crate) times_s: Vec<f64>,
+    /// Positions, metres east and north.
+    pub(crate) positions_m: Vec<DVec2>,
+    /// Recorded courses, radians (when every fix gives one).
+    pub(crate) courses_rad: Option<Vec<f64>>,
+    /// Recorded speeds, metres per second (when every fix gives one).
+    pub(crate) speeds_mps: Option<Vec<f64>>,
+    /// Fixes dropped because an earlier one had the same time.
+    pub(crate) duplicates: usize,
+}
+
+impl Prepared {
+    /// The track in the local frame (`frame` places latitude and longitude).
+    pub(crate) fn new(track: &Track, frame: Option<&LocalFrame>) -> Self {
+        let mut fixes = track.fixes.clone();
+        fixes.sort_by(|a, b| a.time_s.total_cmp(&b.time_s));
+        let before = fixes.len();
+        fixes.dedup_by(|later, earlier| later.time_s == earlier.time_s);
+        let local = |place: Place| match (place, frame) {
+            (Place::Local(position_m), _) => position_m,
+            (Place::LatLon(lat_deg, lon_deg), Some(frame)) => frame.to_local_m(lat_deg, lon_deg),
+            // The caller gives a frame whenever a fix is geographic.
+            (Place::LatLon(..), None) => DVec2::NAN,
+        };
+        let all = |values: Vec<Option<f64>>| values.into_iter().collect::<Option<Vec<f64>>>();
+        Self {
+            name: track.name.clone(),
+            times_s: fixes.iter().map(|fix| fix.time_s).collect(),
+            positions_m: fixes.iter().map(|fix| local(fix.place)).collect(),
+            courses_rad: all(fixes
+                .iter()
+                .map(|fix| fix.course_deg.map(f64::to_radians))
+                .collect()),
+            speeds_mps: all(fixes
+                .iter()
+                .map(|fix| fix.speed_kn.map(units::knots_to_mps))
+                .collect()),
+            duplicates: before - fixes.len(),
+        }
+    }
+
+    /// First and last fix time.
+    pub(crate) fn span_s(&self) -> (f64, f64) {
+        (
+            self.times_s.first().copied().unwrap_or(0.0),
+            self.times_s.last().copied().unwrap_or(0.0),
+        )
+    }
+}
+
+/// One vessel on the common clock.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Sampled {
+    /// Positions, metres.
+    pub(crate) positions_m: Vec<DVec2>,
+    /// Courses over ground, radians.
+    pub(crate) courses_rad: Vec<f64>,
+    /// Speeds over ground, metres per second.
+    pub(crate) speeds_mps: Vec<f64>,
+    /// Whether the courses were recorded (else taken from the track).
+    pub(crate) courses_recorded: bool,
+    /// Whether the speeds were recorded (else taken from the track).
+    pub(crate) speeds_recorded: bool,
+}
+
+/// The common clock.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub(crate) struct Clock {
+    /// Every tick, seconds.
+    #[serde(skip)]
+    pub(crate) times_s: Vec<f64>,
+    /// The step between ticks, seconds (the median where the input's own
+    /// times are kept).
+    pub(crate) step_s: f64,
+    /// Whether the vessels were interpolated onto a new clock (`false`:
+    /// they all shared their time stamps, which are kept).
+    pub(crate) resampled: bool,
+    /// The judged interval's start, seconds.
+    pub(crate) from_s: f64,
+    /// Its end, seconds.
+    pub(crate) to_s: f64,
+    /// Number of ticks.
+    pub(crate) samples: usize,
+}
+
+/// A stretch without fixes longer than the gap limit, bridged by a straight
+/// line.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub(crate) struct Gap {
+    /// The vessel.
+    pub(crate) vessel: String,
+    /// The last fix before it, seconds.
+    pub(crate) from_s: f64,
+    /// The first fix after it, seconds.
+    pub(crate) to_s: f64,
+}
+
+/// The median of the positive steps between fix times of every vessel.
+fn median_step_s(vessels: &[&Prepared]) -> Option<f64> {
+    let mut steps: Vec<f64> = vessels
+        .iter()
+        .flat_map(|vessel| vessel.times_s.windows(2).map(|pair| pair[1] - pair[0]))
+        .filter(|step| *step > 0.0)
+        .collect();
+    steps.sort_by(f64::total_cmp);
+    steps.get(steps.len() / 2).copied()
+}
+
+/// The common clock over `[from_s, to_s]`: the vessels' own times when they
+/// all share them, else ticks `step_s` apart (given, or the median step).
+///
+/// # Errors
+/// [`CliError::BadInput`] when the interval holds fewer than two ticks or
+/// too many samples.
+pub(crate) fn clock(
+    vessels: &[&Prepared],
+    (from_s, to_s): (f64, f64),
+    step_s: Option<f64>,
+) -> Result<Clock, CliError> {
+    let shared = vessels
+        .windows(2)
+        .all(|pair| pair[0].times_s == pair[1].times_s);
+    let median = median_step_s(vessels).unwrap_or(0.0);
+    let (times_s, step_s, resampled) = match (shared, step_s) {
+        (true, None) => (
+            vessels
+                .first()
+                .map(|vessel| vessel.times_s.clone())
+                .unwrap_or_default(),
+            median,
+            false,
+        ),
+        (_, step) => {
+            let step_s = step.unwrap_or(median);
+            if !(step_s.is_finite() && step_s > 0.0) {
+                return Err(CliError::BadInput(
+                    "the tracks have no two fixes at different times: nothing to judge".into(),
+                ));
+            }
+            let ticks = ((to_s - from_s) / step_s + 1e-9).floor();
+            #[allow(clippy::cast_precision_loss)]
+            if !(ticks.is_finite() && ticks * (vessels.len() as f64) < MAX_SAMPLES as f64) {
+                return Err(CliError::BadInput(format!(
+                    "resampling {:.0} s at a step of {step_s} s for {} vessels needs more than {MAX_SAMPLES} samples: give a larger --step-s",
+                    to_s - from_s,
+                    vessels.len()
+                )));
+            }
+            #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+            let ticks = ticks as usize;
+            #[allow(clippy::cast_precision_loss)]
+            let times = (0..=ticks)
+                .map(|tick| (from_s + tick as f64 * step_s).min(to_s))
+                .collect();
+            (times, step_s, true)
+        }
+    };
+    if times_s.len() < 2 {
+        return Err(CliError::BadInput(format!(
+            "the judged interval {from_s} s to {to_s} s holds fewer than two samples: nothing to judge"
+        )));
+    }
+    Ok(Clock {
+        step_s,
+        resampled,
+        from_s: times_s.first().copied().unwrap_or(from_s),
+        to_s: times_s.last().copied().unwrap_or(to_s),
+        samples: times_s.len(),
+        times_s,
+    })
+}
+
+/// Where `time_s` falls among `times_s`: the fix at or before it and the
+/// fraction of the way to the next (0 at or beyond the last fix; the clock
+/// never leaves the vessel's span, so nothing is extrapolated).
+fn bracket(times_s: &[f64], time_s: f64) -> (usize, usize, f64) {
+    let after = times_s.partition_point(|fix_s| *fix_s <= time_s);
+    let before = after.saturating_sub(1);
+    match times_s.get(after) {
+        Some(next_s) if after > 0 => {
+            let span_s = next_s - times_s[before];
+            (
+                before,
+                after,
+                ((time_s - times_s[before]) / span_s).clamp(0.0, 1.0),
+            )
+        }
+        _ => (before, before, 0.0),
+    }
+}
+
+/// Course over ground from a track: the direction from the sample before to
+/// the sample after (one-sided at the ends); a vessel that does not move
+/// keeps the course it had.
+fn courses_from_track(positions_m: &[DVec2]) -> Vec<f64> {
+    let last = positions_m.len().saturating_sub(1);
+    let mut courses: Vec<Option<f64>> = (0..positions_m.len())
+        .map(|index| {
+            let delta = positions_m[(index + 1).min(last)] - positions_m[index.saturating_sub(1)];
+            (delta.length() > 1e-9).then(|| angle::normalize_2pi(delta.x.atan2(delta.y)))
+        })
+        .collect();
+    // Forward, then backward fill over the stretches at rest.
+    for index in 1..courses.len() {
+        if courses[index].is_none() {
+            courses[index] = courses[index - 1];
+        }
+    }
+    for index in (0..courses.len().saturating_sub(1)).rev() {
+        if courses[index].is_none() {
+            courses[index] = courses[index + 1];
+        }
+    }
+    courses.into_iter().map(|c| c.unwrap_or(0.0)).collect()
+}
+
+/// Speed over ground from a track: distance from the sample before to the
+/// sample after over the time between them.
+fn speeds_from_track(times_s: &[f64], positions_m: &[DVec2]) -> Vec<f64> {
+    let last = positions_m.len().saturating_sub(1);
+    (0..positions_m.len())
+        .map(|index| {
+            let (a, b) = (index.saturating_sub(1), (index + 1).min(last));
+            let dt = times_s[b] - times_s[a];
+            if dt > 0.0 {
+                positions_m[b].distance(positions_m[a]) / dt
+            } else {
+                0.0
+            }
+        })
+        .collect()
+}
+
+/// `vessel` on `clock`: positions and recorded speeds interpolated linearly,
+/// recorded courses along the shorter turn; courses and speeds the file
+/// does not give are taken from the resampled track.
+pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
+    let brackets: Vec<(usize, usize, f64)> = clock
+        .times_s
+        .iter()
+        .map(|time_s| bracket(&vessel.times_s, *time_s))
+        .collect();
+    let positions_m: Vec<DVec2> = brackets
+        .iter()
+        .map(|&(a, b, u)| {
+            let (pa, pb) = (vessel.positions_m[a], vessel.positions_m[b]);
+            if u == 0.0 { pa } else { pa + (pb - pa) * u }
+        })
+        .collect();
+    let courses_rad = match &vessel.courses_rad {
+        Some(courses) => brackets
+            .iter()
+            .map(|&(a, b, u)| {
+                let (ca, cb) = (courses[a], courses[b]);
+                if u == 0.0 {
+                    ca
+                } else {
+                    angle::normalize_2pi(ca + angle::signed_turn(ca, cb) * u)
+                }
+            })
+            .collect(),
+        None => courses_from_track(&positions_m),
+    };
+    let speeds_mps = match &vessel.speeds_mps {
+        Some(speeds) => brackets
+            .iter()
+            .map(|&(a, b, u)| {
+                let (sa, sb) = (speeds[a], speeds[b]);
+                if u == 0.0 { sa } else { sa + (sb - sa) * u }
+            })
+            .collect(),
+        None => speeds_from_track(&clock.times_s, &positions_m),
+    };
+    Sampled {
+        positions_m,
+        courses_rad,
+        speeds_mps,
+        courses_recorded: vessel.courses_rad.is_some(),
+        speeds_recorded: vessel.speeds_mps.is_some(),
+    }
+}
+
+/// The stretches of `vessel` within the judged interval longer than
+/// `max_gap_s` without a fix.
+pub(crate) fn gaps(vessel: &Prepared, clock: &Clock, max_gap_s: f64) -> Vec<Gap> {
+    vessel
+        .times_s
+        .windows(2)
+        .filter(|pair| {
+            pair[1] - pair[0] > max_gap_s && pair[1] > clock.from_s && pair[0] < clock.to_s
+        })
+        .map(|pair| Gap {
+            vessel: vessel.name.clone(),
+            from_s: pair[0],
+            to_s: pair[1],
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::judge::tracks::Fix;
+
+    fn track(name: &str, fixes: &[(f64, f64, f64)]) -> Track {
+        Track {
+            name: name.into(),
+            fixes: fixes
+                .iter()
+                .map(|&(time_s, east, north)| Fix {
+                    time_s,
+                    place: Place::Local(DVec2::new(east, north)),
+                    course_deg: None,
+                    speed_kn: None,
+                })
+                .collect(),
+            ..Track::default()
+        }
+    }
+
+    #[test]
+    fn shared_times_are_kept_exactly() {
+        let a = Prepared::new(&track("a", &[(0.0, 0.0, 0.0), (5.0, 0.0, 30.0)]), None);
+        let b = Prepared::new(&track("b", &[(0.0, 9.0, 0.0), (5.0, 9.0, 10.0)]), None);
+        let clock = clock(&[&a, &b], (0.0, 5.0), None).unwrap();
+        assert!(!clock.resampled);
+        assert_eq!(clock.times_s, vec![0.0, 5.0]);
+        let sampled = sample(&a, &clock);
+        assert_eq!(sampled.positions_m, a.positions_m);
+        assert!((sampled.speeds_mps[0] - 6.0).abs() < 1e-12);
+        assert!(sampled.courses_rad[0].abs() < 1e-12);
+    }
+
+    #[test]
+    fn irregular_times_are_interpolated_at_the_median_step_without_extrapolation() {
+        // Fixes at 0, 2, 4, 10 and 1, 3, ..., 9: median step 2; moving east 1 m/s.
+        let a = Prepared::new(
+            &track(
+                "a",
+                &[
+                    (0.0, 0.0, 0.0),
+                    (2.0, 2.0, 0.0),
+                    (4.0, 4.0, 0.0),
+                    (10.0, 10.0, 0.0),
+                ],
+            ),
+            None,
+        );
+        let b = Prepared::new(
+            &track(
+                "b",
+                &[
+                    (1.0, 0.0, 5.0),
+                    (3.0, 2.0, 5.0),
+                    (5.0, 4.0, 5.0),
+                    (7.0, 6.0, 5.0),
+                    (9.0, 8.0, 5.0),
+                ],
+            ),
+            None,
+        );
+        let clock = clock(&[&a, &b], (1.0, 9.0), None).unwrap();
+        assert!(clock.resampled);
+        assert_eq!(clock.times_s, vec![1.0, 3.0, 5.0, 7.0, 9.0]);
+        let sampled = sample(&a, &clock);
+        for (time_s, position) in clock.times_s.iter().zip(&sampled.positions_m) {
+            assert!((position.x - time_s).abs() < 1e-9);
+        }
+        assert!((sampled.courses_rad[2] - std::f64::consts::FRAC_PI_2).abs() < 1e-9);
+        let gaps = gaps(&a, &clock, 5.0);
+        assert_eq!(gaps.len(), 1);
+        assert_eq!((gaps[0].from_s, gaps[0].to_s), (4.0, 10.0));
+    }
+
+    #[test]
+    fn recorded_courses_turn_the_short_way_and_duplicates_go() {
+        let mut t = track("a", &[(0.0, 0.0, 0.0), (0.0, 5.0, 5.0), (10.0, 0.0, 10.0)]);
+        t.fixes[0].course_deg = Some(350.0);
+        t.fixes[1].course_deg = Some(0.0);
+        t.fixes[2].course_deg = Some(10.0);
+        let a = Prepared::new(&t, None);
+        assert_eq!(a.duplicates, 1);
+        let clock = clock(&[&a], (0.0, 10.0), Some(5.0)).unwrap();
+        let sampled = sample(&a, &clock);
+        assert!(sampled.courses_recorded);
+        assert!(
+            sampled.courses_rad[1].to_degrees().abs() < 1e-9,
+            "{:?}",
+            sampled.courses_rad
+        );
+    }
+}
