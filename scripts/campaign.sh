@@ -11,8 +11,11 @@ count=${2:-1000}
 jobs=${3:-2}
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-vorrt=target/release/vorrt
 mkdir -p "$out"
+# A copy, so that rebuilding the checkout meanwhile cannot change the binary
+# half way through the campaign.
+cp target/release/vorrt "$out/vorrt"
+vorrt=$out/vorrt
 for behaviour in constant colregs noisy sudden-turn; do
     for kind in os2 os4 os8 os16 tss1 tss3; do
         case $kind in
