@@ -3,7 +3,7 @@
 use crate::args::{Cli, Command, PlanFormat};
 use crate::error::{CliError, ExitStatus};
 use crate::progress::Ticker;
-use crate::report::{PlanOutput, Report};
+use crate::report::{PlanOutput, Report, yes_no};
 use crate::run::{OUTPUT_FILES, folder_name, load, run_scenario, seed_for, write_outputs};
 use crate::{batch, console, demo};
 use std::path::{Path, PathBuf};
@@ -60,10 +60,6 @@ pub(crate) fn planner_calls(report: &Report) -> String {
     )
 }
 
-fn yes_no(value: bool) -> &'static str {
-    if value { "yes" } else { "no" }
-}
-
 /// The summary table `simulate` prints.
 #[must_use]
 pub(crate) fn summary_table(report: &Report) -> String {
@@ -74,37 +70,7 @@ pub(crate) fn summary_table(report: &Report) -> String {
         "scenario {} (seed {}), d_th = {:.0} m",
         report.scenario, report.seed, report.d_th_m
     );
-    let name_width = report
-        .targets
-        .iter()
-        .map(|target| target.name.chars().count())
-        .chain([6])
-        .max()
-        .unwrap_or(6);
-    let _ = writeln!(
-        text,
-        "\n{:<name_width$}  {:<17}  {:<8}  {:>10}  {:>10}  {:<9}  {:>5}",
-        "target", "encounter", "role", "min dist m", "at min", "compliant", "score"
-    );
-    for target in &report.targets {
-        let _ = writeln!(
-            text,
-            "{:<name_width$}  {:<17}  {:<8}  {:>10.1}  {:>6.1} min  {:<9}  {:>5.2}",
-            target.name,
-            target.encounter,
-            target.role,
-            target.min_distance_m,
-            target.time_of_min_s / 60.0,
-            yes_no(target.compliant),
-            target.score
-        );
-        for violation in &target.violations {
-            let _ = writeln!(text, "{:<name_width$}    - {violation}", "");
-        }
-    }
-    if report.targets.is_empty() {
-        let _ = writeln!(text, "(no targets)");
-    }
+    report.write_target_table(&mut text);
     let _ = writeln!(text);
     let arrival = match report.arrival_time_s {
         Some(time_s) => format!("yes, at {:.1} min", time_s / 60.0),

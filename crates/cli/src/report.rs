@@ -340,3 +340,48 @@ impl PlanOutput {
         }
     }
 }
+
+impl Report {
+    /// Appends the per-target table that `simulate` and `judge` print: one
+    /// line per target (encounter, role, closest approach, compliance,
+    /// score), each finding on a line of its own under it.
+    pub(crate) fn write_target_table(&self, text: &mut String) {
+        use std::fmt::Write as _;
+        let name_width = self
+            .targets
+            .iter()
+            .map(|target| target.name.chars().count())
+            .chain([6])
+            .max()
+            .unwrap_or(6);
+        let _ = writeln!(
+            text,
+            "\n{:<name_width$}  {:<17}  {:<8}  {:>10}  {:>10}  {:<9}  {:>5}",
+            "target", "encounter", "role", "min dist m", "at min", "compliant", "score"
+        );
+        for target in &self.targets {
+            let _ = writeln!(
+                text,
+                "{:<name_width$}  {:<17}  {:<8}  {:>10.1}  {:>6.1} min  {:<9}  {:>5.2}",
+                target.name,
+                target.encounter,
+                target.role,
+                target.min_distance_m,
+                target.time_of_min_s / 60.0,
+                yes_no(target.compliant),
+                target.score
+            );
+            for violation in &target.violations {
+                let _ = writeln!(text, "{:<name_width$}    - {violation}", "");
+            }
+        }
+        if self.targets.is_empty() {
+            let _ = writeln!(text, "(no targets)");
+        }
+    }
+}
+
+/// "yes" or "no", for the console tables.
+pub(crate) fn yes_no(value: bool) -> &'static str {
+    if value { "yes" } else { "no" }
+}

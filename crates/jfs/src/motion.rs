@@ -143,6 +143,27 @@ impl Leg {
         }
     }
 
+    /// The leg that turns from `from` the shorter way onto `course_rad` on
+    /// an arc of `turn_radius_m` (0: at once), then runs `straight_m`.
+    #[must_use]
+    pub fn turning_onto(
+        from: Pose,
+        course_rad: f64,
+        turn_radius_m: f64,
+        speed_mps: f64,
+        straight_m: f64,
+    ) -> Self {
+        Self {
+            start_m: from.position_m,
+            start_course_rad: from.course_rad,
+            course_rad: angle::normalize_2pi(course_rad),
+            turn_rad: angle::signed_turn(from.course_rad, course_rad),
+            turn_radius_m,
+            straight_m,
+            speed_mps,
+        }
+    }
+
     /// Length of the arc, metres.
     #[must_use]
     pub fn arc_m(&self) -> f64 {
@@ -438,15 +459,7 @@ impl MotionModel for InstantTurn {
     }
 
     fn turn_onto(&self, from: Pose, course_rad: f64, speed_mps: f64, straight_m: f64) -> Leg {
-        Leg {
-            start_m: from.position_m,
-            start_course_rad: from.course_rad,
-            course_rad: angle::normalize_2pi(course_rad),
-            turn_rad: angle::signed_turn(from.course_rad, course_rad),
-            turn_radius_m: 0.0,
-            straight_m,
-            speed_mps,
-        }
+        Leg::turning_onto(from, course_rad, 0.0, speed_mps, straight_m)
     }
 }
 
@@ -530,15 +543,7 @@ impl MotionModel for RateLimitedTurn {
     }
 
     fn turn_onto(&self, from: Pose, course_rad: f64, speed_mps: f64, straight_m: f64) -> Leg {
-        Leg {
-            start_m: from.position_m,
-            start_course_rad: from.course_rad,
-            course_rad: angle::normalize_2pi(course_rad),
-            turn_rad: angle::signed_turn(from.course_rad, course_rad),
-            turn_radius_m: self.turn_radius_m,
-            straight_m,
-            speed_mps,
-        }
+        Leg::turning_onto(from, course_rad, self.turn_radius_m, speed_mps, straight_m)
     }
 }
 

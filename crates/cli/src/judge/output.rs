@@ -30,10 +30,6 @@ impl Judgement {
     }
 }
 
-fn yes_no(value: bool) -> &'static str {
-    if value { "yes" } else { "NO" }
-}
-
 /// The table `vorrt judge` prints.
 pub(crate) fn table(judgement: &Judgement) -> String {
     use std::fmt::Write as _;
@@ -84,37 +80,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     {
         let _ = writeln!(text, "  {line}");
     }
-    let name_width = report
-        .targets
-        .iter()
-        .map(|target| target.name.chars().count())
-        .chain([6])
-        .max()
-        .unwrap_or(6);
-    let _ = writeln!(
-        text,
-        "\n{:<name_width$}  {:<17}  {:<8}  {:>10}  {:>10}  {:<9}  {:>5}",
-        "target", "encounter", "role", "min dist m", "at min", "compliant", "score"
-    );
-    for target in &report.targets {
-        let _ = writeln!(
-            text,
-            "{:<name_width$}  {:<17}  {:<8}  {:>10.1}  {:>6.1} min  {:<9}  {:>5.2}",
-            target.name,
-            target.encounter,
-            target.role,
-            target.min_distance_m,
-            target.time_of_min_s / 60.0,
-            yes_no(target.compliant),
-            target.score
-        );
-        for violation in &target.violations {
-            let _ = writeln!(text, "{:<name_width$}    - {violation}", "");
-        }
-    }
-    if report.targets.is_empty() {
-        let _ = writeln!(text, "(no targets)");
-    }
+    report.write_target_table(&mut text);
     let _ = writeln!(text);
     let _ = writeln!(
         text,
