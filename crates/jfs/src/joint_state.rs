@@ -7,11 +7,11 @@
 //! as in the paper (erratum 10: a planner may bound it).
 
 use crate::error::JfsError;
+use crate::motion::{InstantTurn, MotionModel, Pose};
 use crate::prediction::TargetState;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::VesselState;
-use vorrt_geometry::angle;
 
 /// Every vessel's state at one time.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -56,20 +56,33 @@ pub fn step_ownship(
             what: "the point to step toward",
         });
     }
-    let offset = point_m - own.position_m;
-    let distance = offset.length();
+    // The paper's step is the instantaneous-turn motion model with no bound
+    // on the turn: one implementation for the planner and this API.
+    let model = InstantTurn {
+        max_turn_rad: std::f64::consts::PI,
+    };
+    let from = Pose {
+        position_m: own.position_m,
+        course_rad: own.course_rad,
+    };
     let mut next = *own;
-    if distance <= step_m {
-        next.position_m = point_m;
+    let Some(leg) = model.steer(from, point_m, own.speed_mps, step_m) else {
+        // Already on the point.
+        return Ok(OwnshipStep {
+            ownship: next,
+            duration_s: 0.0,
+        });
+    };
+    next.course_rad = leg.course_rad;
+    next.position_m = if point_m.distance(own.position_m) <= step_m {
+        // Exactly on a point within reach, whatever the rounding.
+        point_m
     } else {
-        next.position_m += offset * (step_m / distance);
-    }
-    if distance > 0.0 {
-        next.course_rad = angle::unit_to_course(offset);
-    }
+        leg.end_m()
+    };
     Ok(OwnshipStep {
         ownship: next,
-        duration_s: distance.min(step_m) / own.speed_mps,
+        duration_s: leg.duration_s(),
     })
 }
 

@@ -16,7 +16,6 @@
 //! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
 //! | [`validity`] | [`MotionValidator`]: the one validity check of a [`Leg`](vorrt_jfs::Leg), used by tree growth, simplification and a closed loop; [`EncounterState`] carried along a branch |
 //! | [`simplify`] | [`simplify`](simplify::simplify): a branch into the fewest sailable legs the same validator accepts |
-//! | [`tree`] | [`Tree`](tree::Tree): the node arena and nearest-node search (linear or R*-tree) |
 //! | [`sampler`] | [`Sampler`](sampler::Sampler): ChaCha8 goal-biased sampling |
 //! | [`evasion`] | [`evasive_course`]: the course that keeps farthest from every target, for when no safe path is found |
 //! | [`plan`] | [`Plan`], [`Waypoint`], [`PlanStatistics`], [`RejectionCause`] |
@@ -31,7 +30,7 @@ pub mod problem;
 pub mod safety;
 pub mod sampler;
 pub mod simplify;
-pub mod tree;
+mod tree;
 pub mod validity;
 pub mod vorrt;
 

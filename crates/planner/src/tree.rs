@@ -17,27 +17,27 @@ type IndexedPoint = GeomWithData<[f64; 2], u32>;
 
 /// The tree of joint states.
 #[derive(Debug, Default)]
-pub struct Tree {
+pub(crate) struct Tree {
     /// Ownship's position at each node, metres.
-    pub positions: Vec<DVec2>,
+    pub(crate) positions: Vec<DVec2>,
     /// Ownship's course on the segment into each node, radians.
-    pub courses: Vec<f64>,
+    pub(crate) courses: Vec<f64>,
     /// Unit vector of each node's course (x east, y north).
-    pub headings: Vec<DVec2>,
+    pub(crate) headings: Vec<DVec2>,
     /// Time of each node, seconds.
-    pub times: Vec<f64>,
+    pub(crate) times: Vec<f64>,
     /// Parent of each node (the root is its own parent).
-    pub parents: Vec<u32>,
+    pub(crate) parents: Vec<u32>,
     /// Encounters in force at each node: `latches[node * targets + target]`.
-    pub latches: Vec<Option<EncounterLatch>>,
+    pub(crate) latches: Vec<Option<EncounterLatch>>,
     /// For each encounter in force (same layout), the largest alteration of
     /// course from its reference made on the branch since it began, radians
     /// (rule 16: readily apparent).
-    pub alterations: Vec<f64>,
+    pub(crate) alterations: Vec<f64>,
     /// Why the move from each node straight for the goal was rejected, once
     /// tried: the same node and goal always give the same move, so a goal
     /// sample that picks it again is answered from here.
-    pub goal_rejections: Vec<Option<RejectionCause>>,
+    pub(crate) goal_rejections: Vec<Option<RejectionCause>>,
     targets: usize,
     index: NearestIndex,
     rtree: RTree<IndexedPoint>,
@@ -51,7 +51,7 @@ pub struct Tree {
 
 impl Tree {
     /// Empties the tree and sizes its buffers for `capacity` nodes of `targets` targets.
-    pub fn reset(&mut self, capacity: usize, targets: usize, index: NearestIndex) {
+    pub(crate) fn reset(&mut self, capacity: usize, targets: usize, index: NearestIndex) {
         self.positions.clear();
         self.courses.clear();
         self.headings.clear();
@@ -80,7 +80,7 @@ impl Tree {
     /// within the turn whose cosine is `min_cos`) as they are added, so that
     /// [`nearest_facing_goal`](Self::nearest_facing_goal) costs nothing. Call
     /// after [`reset`](Self::reset), before the first node.
-    pub fn set_goal(&mut self, goal_m: DVec2, min_cos: f64) {
+    pub(crate) fn set_goal(&mut self, goal_m: DVec2, min_cos: f64) {
         self.goal = Some((goal_m, min_cos));
     }
 
@@ -88,7 +88,7 @@ impl Tree {
     /// [`set_goal`](Self::set_goal), from the kept answer (the same node the
     /// linear scan finds).
     #[must_use]
-    pub fn nearest_facing_goal(&self) -> Option<u32> {
+    pub(crate) fn nearest_facing_goal(&self) -> Option<u32> {
         self.nearest_facing_goal
             .or(self.nearest_goal)
             .map(|(_, index)| index)
@@ -96,19 +96,13 @@ impl Tree {
 
     /// Number of nodes.
     #[must_use]
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.positions.len()
-    }
-
-    /// Whether the tree has no node.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.positions.is_empty()
     }
 
     /// Adds a node and returns its index; `latches` and `alterations` hold
     /// one entry per target.
-    pub fn push(
+    pub(crate) fn push(
         &mut self,
         position_m: DVec2,
         course_rad: f64,
@@ -151,14 +145,14 @@ impl Tree {
 
     /// The encounters in force at `node`.
     #[must_use]
-    pub fn latches_of(&self, node: u32) -> &[Option<EncounterLatch>] {
+    pub(crate) fn latches_of(&self, node: u32) -> &[Option<EncounterLatch>] {
         let start = node as usize * self.targets;
         &self.latches[start..start + self.targets]
     }
 
     /// The alterations made for the encounters in force at `node`.
     #[must_use]
-    pub fn alterations_of(&self, node: u32) -> &[f64] {
+    pub(crate) fn alterations_of(&self, node: u32) -> &[f64] {
         let start = node as usize * self.targets;
         &self.alterations[start..start + self.targets]
     }
@@ -166,7 +160,7 @@ impl Tree {
     /// The node nearest to `point_m` (Algorithm 2, `getClosestNode`); ties go
     /// to the older node. `None` only for an empty tree.
     #[must_use]
-    pub fn nearest(&self, point_m: DVec2) -> Option<u32> {
+    pub(crate) fn nearest(&self, point_m: DVec2) -> Option<u32> {
         match self.index {
             NearestIndex::Linear => {
                 let mut best = None;
@@ -187,13 +181,15 @@ impl Tree {
         }
     }
 
+    // The scan that `nearest_facing_goal`'s kept answer is tested against.
+    #[cfg(test)]
     /// The node nearest to `point_m` among those that can head for it within
     /// one bounded turn: the angle between the node's course and the
     /// direction to the point is at most `acos(min_cos)`. Falls back to
     /// [`nearest`](Self::nearest) when no node faces the point. Ties go to the
     /// older node, whichever index is used.
     #[must_use]
-    pub fn nearest_facing(&self, point_m: DVec2, min_cos: f64) -> Option<u32> {
+    pub(crate) fn nearest_facing(&self, point_m: DVec2, min_cos: f64) -> Option<u32> {
         let faces = |index: usize| {
             faces(
                 self.headings[index],
@@ -240,7 +236,7 @@ impl Tree {
 
     /// The branch from the root to `node`, root first.
     #[must_use]
-    pub fn branch(&self, node: u32) -> Vec<u32> {
+    pub(crate) fn branch(&self, node: u32) -> Vec<u32> {
         let mut branch = vec![node];
         let mut current = node;
         while self.parents[current as usize] != current {

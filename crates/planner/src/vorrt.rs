@@ -83,12 +83,6 @@ impl Planner {
         })
     }
 
-    /// The tree of the last plan (for inspection and tests).
-    #[must_use]
-    pub fn debug_tree(&self) -> &Tree {
-        &self.tree
-    }
-
     /// The configuration in use.
     #[must_use]
     pub fn config(&self) -> &PlannerConfig {
