@@ -1,6 +1,7 @@
 //! Benchmarks of the whole closed loop (`vorrt_scenarios::simulate`: plan,
 //! follow, replan, until the goal or the time limit): all 22 Imazu cases in
-//! one iteration, and the paper's traffic separation scheme.
+//! one iteration (also with the paper's instantaneous turns,
+//! `imazu_all_instant`), and the paper's traffic separation scheme.
 //!
 //! Run with `cargo bench --bench closed_loop`; see `docs/performance.md`.
 
@@ -12,7 +13,8 @@ mod support;
 use criterion::{Criterion, SamplingMode, black_box, criterion_group, criterion_main};
 use std::time::Duration;
 use support::{SEED, fixture};
-use vorrt::scenarios::{Scenario, simulate};
+use vorrt::planner::{PlannerConfig, Turning};
+use vorrt::scenarios::{Scenario, simulate, simulate_with};
 
 fn imazu_all() -> Vec<Scenario> {
     (1..=22)
@@ -43,6 +45,43 @@ fn closed_loop(c: &mut Criterion) {
             let mut plans = 0usize;
             for scenario in &imazu {
                 let record = simulate(black_box(scenario), black_box(SEED)).expect("valid");
+                plans += record.plans_made();
+            }
+            plans
+        });
+    });
+
+    // The same cases with the paper's instantaneous turns: the difference
+    // is the cost of turn-rate-limited plans and tracks in closed loop.
+    let instant: Vec<(&Scenario, PlannerConfig)> = imazu
+        .iter()
+        .map(|scenario| {
+            let config = scenario.planner_config().expect("valid planner section");
+            (
+                scenario,
+                PlannerConfig {
+                    turning: Turning::Instant,
+                    ..config
+                },
+            )
+        })
+        .collect();
+    let reached = instant
+        .iter()
+        .filter(|(scenario, config)| {
+            simulate_with(scenario, config, SEED).is_ok_and(|record| record.reached_goal)
+        })
+        .count();
+    eprintln!(
+        "closed_loop/imazu_all_instant: {reached} of {} reach the goal",
+        instant.len()
+    );
+    group.bench_function("imazu_all_instant", |b| {
+        b.iter(|| {
+            let mut plans = 0usize;
+            for (scenario, config) in &instant {
+                let record =
+                    simulate_with(black_box(scenario), config, black_box(SEED)).expect("valid");
                 plans += record.plans_made();
             }
             plans

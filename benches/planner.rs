@@ -1,5 +1,6 @@
-//! Benchmarks of one call to `Planner::plan`: the paper's five scenarios,
-//! scaling with the number of targets and with the tree size, and the two
+//! Benchmarks of one call to `Planner::plan`: the paper's five scenarios
+//! (each with the default turn-rate-limited plan and, as `<name>_instant`,
+//! with the paper's instantaneous turns), scaling with the number of targets and with the tree size, and the two
 //! nearest-node indexes.
 //!
 //! Run with `cargo bench --bench planner`; see `docs/performance.md`.
@@ -15,7 +16,7 @@ use support::{
     GENERATOR_SEED, SEED, blocked_goal_config, blocked_goal_problem, fixture_problem,
     generated_problem,
 };
-use vorrt::planner::{NearestIndex, Planner, PlannerConfig, PlanningProblem};
+use vorrt::planner::{NearestIndex, Planner, PlannerConfig, PlanningProblem, Turning};
 
 /// Plans once outside the measurement and says on stderr what the search
 /// did, so that a time can be read together with the work behind it.
@@ -59,6 +60,20 @@ fn paper_scenarios(c: &mut Criterion) {
     for name in ["crossing", "head_on", "overtaking", "multi_vessel", "tss"] {
         let (problem, config) = fixture_problem("paper", name);
         bench_plan(&mut group, GROUP, name, &problem, config);
+        // The paper's instantaneous turns: the tree's branch is the plan, no
+        // simplification into legs and arcs. The difference to the id above
+        // is the cost of the turn-rate-limited plan.
+        let instant = PlannerConfig {
+            turning: Turning::Instant,
+            ..config
+        };
+        bench_plan(
+            &mut group,
+            GROUP,
+            &format!("{name}_instant"),
+            &problem,
+            instant,
+        );
     }
     group.finish();
 }
