@@ -20,8 +20,8 @@ old_dir=$(cd "${1:?usage: benches/side_by_side.sh OLD_CHECKOUT [ROUNDS] [OUT_DIR
 rounds=${2:-3}
 new_dir=$(cd "$(dirname "$0")/.." && pwd)
 out=$(mkdir -p "${3:-$new_dir/target/side_by_side}" && cd "${3:-$new_dir/target/side_by_side}" && pwd)
-old_target=${OLD_TARGET_DIR:-$old_dir/target}
-new_target=${CARGO_TARGET_DIR:-$new_dir/target}
+old_target=$(realpath -m "${OLD_TARGET_DIR:-$old_dir/target}")
+new_target=$(realpath -m "${CARGO_TARGET_DIR:-$new_dir/target}")
 warm_up_s=${WARM_UP_S:-1}
 measure_s=${MEASURE_S:-2}
 
