@@ -13,7 +13,8 @@
 # OUT_DIR to target/side_by_side. The old checkout builds into
 # $OLD_TARGET_DIR (default <old>/target), this one into $CARGO_TARGET_DIR
 # (default target). WARM_UP_S and MEASURE_S (default 1 and 2) set the times
-# of the benchmarks whose group does not fix them in code.
+# of the benchmarks whose group does not fix them in code; SUITES (default
+# "geometry planner closed_loop") chooses the suites.
 set -euo pipefail
 
 old_dir=$(cd "${1:?usage: benches/side_by_side.sh OLD_CHECKOUT [ROUNDS] [OUT_DIR]}" && pwd)
@@ -29,7 +30,7 @@ run_suites() { # side dir target_dir round
     local side=$1 dir=$2 target=$3 round=$4
     local home="$out/$side/round$round"
     mkdir -p "$home"
-    for suite in geometry planner closed_loop; do
+    for suite in ${SUITES:-geometry planner closed_loop}; do
         local filter=""
         [ "$suite" = planner ] && filter='^plan/'
         echo "== round $round, $side, $suite ($(uptime | sed 's/.*load average: //'))"

@@ -24,7 +24,7 @@ route (the peer has no goal, it follows the route line), or at the limit.
 
 Writes DIR/<case>/trajectory.csv in the format of vorrt's trajectory.csv
 (docs/report-format.md: time_s,vessel,east_m,north_m,course_deg,speed_kn,
-ownship first at every step) and DIR/summary.csv: per case the wall-clock
+ownship first at every step, numbers in full precision) and DIR/summary.csv: per case the wall-clock
 time of the whole closed loop, the time of the policy calls (classifier
 update and `select_action`, mean and largest), steps, simulated time, whether
 ownship arrived, and the smallest distance to any target (between reference
@@ -44,6 +44,7 @@ import csv
 import math
 import re
 import statistics
+from decimal import Decimal
 import sys
 import time
 from dataclasses import dataclass
@@ -161,9 +162,14 @@ def load_case(path: Path) -> Case:
 # --------------------------------------------------------------------------
 
 
-def _format_time(t: float) -> str:
-    """As Rust's `{}` writes an f64: no trailing `.0` on whole numbers."""
-    return str(int(t)) if float(t).is_integer() else repr(float(t))
+def _full(x: float) -> str:
+    """As Rust's `{}` writes an f64 (vorrt's trajectory.csv): the shortest
+    decimal that reads back as the same number, positional, no trailing
+    `.0` on whole numbers."""
+    x = float(x)
+    if x.is_integer() and abs(x) < 1e15:
+        return ("-" if math.copysign(1.0, x) < 0 else "") + str(abs(int(x)))
+    return format(Decimal(repr(x)), "f")
 
 
 class MovingTarget:
@@ -273,8 +279,8 @@ def write_trajectory(path: Path, case: Case, rows: list[tuple]) -> None:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["time_s", "vessel", "east_m", "north_m", "course_deg", "speed_kn"])
         for t, i, east, north, course_rad, speed in rows:
-            w.writerow([_format_time(t), names[i], f"{east:.3f}", f"{north:.3f}",
-                        f"{math.degrees(course_rad) % 360.0:.3f}", f"{speed / KN_MPS:.3f}"])
+            w.writerow([_full(t), names[i], _full(east), _full(north),
+                        _full(math.degrees(course_rad) % 360.0), _full(speed / KN_MPS)])
 
 
 def main() -> int:
