@@ -78,28 +78,7 @@ pub(crate) fn summary_table(report: &Report) -> String {
     };
     let _ = writeln!(text, "reached goal:   {arrival}");
     let _ = writeln!(text, "collision:      {}", yes_no(report.collision));
-    let minimum = match report.min_distance_m {
-        Some(distance) => format!(
-            "{distance:.1} m vs d_th {:.0} m: {}",
-            report.d_th_m,
-            if report.clearance_kept {
-                "kept"
-            } else {
-                "BROKEN"
-            }
-        ),
-        None => "- (no targets)".to_owned(),
-    };
-    let _ = writeln!(text, "min distance:   {minimum}");
-    let _ = writeln!(
-        text,
-        "COLREGs:        {}",
-        if report.compliant {
-            "compliant"
-        } else {
-            "violated"
-        }
-    );
+    report.write_safety_lines(&mut text);
     let _ = writeln!(
         text,
         "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",

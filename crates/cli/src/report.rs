@@ -381,6 +381,36 @@ impl Report {
     }
 }
 
+impl Report {
+    /// Appends the "min distance" and "COLREGs" lines that `simulate` and
+    /// `judge` print under the target table.
+    pub(crate) fn write_safety_lines(&self, text: &mut String) {
+        use std::fmt::Write as _;
+        let minimum = match self.min_distance_m {
+            Some(distance) => format!(
+                "{distance:.1} m vs d_th {:.0} m: {}",
+                self.d_th_m,
+                if self.clearance_kept {
+                    "kept"
+                } else {
+                    "BROKEN"
+                }
+            ),
+            None => "- (no targets)".to_owned(),
+        };
+        let _ = writeln!(text, "min distance:   {minimum}");
+        let _ = writeln!(
+            text,
+            "COLREGs:        {}",
+            if self.compliant {
+                "compliant"
+            } else {
+                "violated"
+            }
+        );
+    }
+}
+
 /// "yes" or "no", for the console tables.
 pub(crate) fn yes_no(value: bool) -> &'static str {
     if value { "yes" } else { "no" }

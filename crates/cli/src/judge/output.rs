@@ -87,28 +87,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
         "collision:      {}",
         if report.collision { "YES" } else { "no" }
     );
-    let minimum = match report.min_distance_m {
-        Some(distance) => format!(
-            "{distance:.1} m vs d_th {:.0} m: {}",
-            report.d_th_m,
-            if report.clearance_kept {
-                "kept"
-            } else {
-                "BROKEN"
-            }
-        ),
-        None => "- (no targets)".to_owned(),
-    };
-    let _ = writeln!(text, "min distance:   {minimum}");
-    let _ = writeln!(
-        text,
-        "COLREGs:        {}",
-        if report.compliant {
-            "compliant"
-        } else {
-            "violated"
-        }
-    );
+    report.write_safety_lines(&mut text);
     let arrival = match report.arrival_time_s {
         Some(time_s) => format!("yes, at {:.1} min", time_s / 60.0),
         None => format!("no (not within {:.0} m of it)", input.goal_tolerance_m),
