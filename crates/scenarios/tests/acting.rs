@@ -1,0 +1,45 @@
+//! Vessels that act: generated open-sea encounters whose targets obey the
+//! COLREGs themselves (turn 35° to starboard when they give way) or wander
+//! (course and speed noise), run in closed loop; ownship never touches a
+//! target's hull.
+//!
+//! 8 cases in a debug run; `VORRT_HEAVY_TESTS=1` runs 128. Targets that turn
+//! suddenly and unannounced are left out here: in 1000-run campaigns they
+//! still end in contact in 0.1-0.2 % of runs (`docs/evaluation.md`).
+
+use proptest::prelude::*;
+use vorrt_scenarios::{OpenSeaSpec, TargetBehaviour, evaluate, simulate};
+
+fn cases() -> u32 {
+    if std::env::var("VORRT_HEAVY_TESTS").is_ok_and(|value| value == "1") {
+        128
+    } else {
+        8
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    #[test]
+    fn acting_targets_are_never_touched(
+        seed in 0u64..1_000_000,
+        targets in 1usize..=3,
+        noisy in any::<bool>(),
+    ) {
+        let behaviour = if noisy {
+            TargetBehaviour::Noisy { course_sigma_deg: 5.0, speed_sigma_kn: 0.5 }
+        } else {
+            TargetBehaviour::Colregs
+        };
+        let spec = OpenSeaSpec::with_targets(targets).with_behaviour(behaviour);
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, seed, 0)
+            .map_err(|error| TestCaseError::fail(error.to_string()))?;
+        let record = simulate(&scenario, seed).map_err(|error| TestCaseError::fail(error.to_string()))?;
+        let evaluation = evaluate(&scenario, &record);
+        prop_assert!(!evaluation.collision, "contact at {:.1} m", evaluation.min_distance_m);
+        // The sailed track stays within ownship's rate of turn.
+        let limit = record.max_turn_rate_rad_s.unwrap_or(f64::INFINITY).to_degrees();
+        prop_assert!(evaluation.max_turn_rate_deg_s <= limit * (1.0 + 1e-9));
+    }
+}
