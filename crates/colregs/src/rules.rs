@@ -74,6 +74,39 @@ pub fn course_change_rad(reference_course_rad: f64, course_rad: f64) -> f64 {
     angle::signed_turn(reference_course_rad, course_rad)
 }
 
+/// The largest alteration from the reference made for an encounter, radians
+/// (rules 8(b), 16), after ownship takes `course_rad` while the latch goes
+/// from `before` to `now`: it grows while the same latch holds, and a new or
+/// released latch starts from none. The planner keeps it along a branch and
+/// the closed loop along the track sailed, with this one rule.
+///
+/// ```
+/// use vorrt_colregs::{rules::alteration_made, Encounter, EncounterLatch, VesselState};
+/// use glam::DVec2;
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let latch = Some(EncounterLatch::new(Encounter::HeadOn, &own, 0.0));
+/// let altered = alteration_made(latch, latch, 0.0, 35f64.to_radians());
+/// assert!((altered - 35f64.to_radians()).abs() < 1e-12);
+/// // Easing back keeps the largest alteration made.
+/// assert_eq!(alteration_made(latch, latch, altered, 10f64.to_radians()), altered);
+/// // A new encounter starts from none.
+/// assert_eq!(alteration_made(None, latch, altered, 10f64.to_radians()), 0.0);
+/// ```
+#[must_use]
+pub fn alteration_made(
+    before: Option<EncounterLatch>,
+    now: Option<EncounterLatch>,
+    altered_rad: f64,
+    course_rad: f64,
+) -> f64 {
+    match (now, before) {
+        (Some(now), Some(was)) if now == was => {
+            altered_rad.max(course_change_rad(now.reference_course_rad, course_rad).abs())
+        }
+        _ => 0.0,
+    }
+}
+
 /// Whether a course change (from [`course_change_rad`]) is a turn at all:
 /// larger than [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)
 /// (2° by default) either way. Smaller changes are not detectable.

@@ -18,8 +18,8 @@
 
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
+use vorrt_colregs::rules::alteration_made;
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch};
-use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, LinearTrack};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -63,11 +63,7 @@ impl EncounterState {
         {
             let before = *latch;
             *latch = update_latch(before, own_then, &track.state_at(elapsed_s), time_s, rules);
-            *altered = match (*latch, before) {
-                (Some(now), Some(was)) if now == was => altered
-                    .max(angle::signed_turn(now.reference_course_rad, own_then.course_rad).abs()),
-                _ => 0.0,
-            };
+            *altered = alteration_made(before, *latch, *altered, own_then.course_rad);
         }
     }
 }

@@ -25,8 +25,8 @@
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::rules::alteration_made;
 use vorrt_colregs::{EncounterLatch, VesselState, update_latch};
-use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
     Compliance, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, check_legs,
@@ -336,12 +336,7 @@ pub fn simulate_with(
             *latch = update_latch(before, &own, &target.state.vessel, time_s, &config.rules);
             // The alteration made for an encounter, as the planner counts it
             // along a branch (rule 16).
-            *altered = match (*latch, before) {
-                (Some(now), Some(was)) if now == was => {
-                    altered.max(signed_turn(now.reference_course_rad, own.course_rad).abs())
-                }
-                _ => 0.0,
-            };
+            *altered = alteration_made(before, *latch, *altered, own.course_rad);
         }
         record.times_s.push(time_s);
         record.ownship.push(own);
