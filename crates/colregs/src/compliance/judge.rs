@@ -69,12 +69,17 @@ impl Findings {
         match (measured.action_time_s, measured.action_range_m) {
             (Some(action_time_s), Some(range_m)) => {
                 let early_range_m = scoring.late_action_range_m;
-                let late = match measured.latch_range_m {
-                    Some(latch_range_m) if latch_range_m >= early_range_m => {
-                        range_m < early_range_m
-                    }
-                    _ => action_time_s - latch.latched_at_s > scoring.reaction_time_s,
-                };
+                // Within the reaction time of the latch an action is never
+                // late (it cannot begin before risk arises, and shows over
+                // ground a little after it begins).
+                let after_reaction = action_time_s - latch.latched_at_s > scoring.reaction_time_s;
+                let late = after_reaction
+                    && match measured.latch_range_m {
+                        Some(latch_range_m) if latch_range_m >= early_range_m => {
+                            range_m < early_range_m
+                        }
+                        _ => true,
+                    };
                 if late {
                     self.violations
                         .push(ComplianceViolation::LateAction { range_m });

@@ -201,6 +201,21 @@ impl Measurements {
             .find(|turn| turn.abs() >= scoring.action_detection_rad);
         let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
         let before_cpa = &in_force[..before_cpa_count];
+        // The alteration made while in force, as it shows over ground: an
+        // observer sees a turn begun just before the encounter ended (say by
+        // opening the range) up to one reaction time (an observation window)
+        // later; never past the closest approach.
+        let shown_until_s = in_force
+            .last()
+            .map_or(f64::NEG_INFINITY, |s| s.time_s + scoring.reaction_time_s)
+            .min(time_of_min_s);
+        let shown = match window.start {
+            start if start < samples.len() && before_cpa_count == in_force.len() => {
+                let count = samples[start..].partition_point(|s| s.time_s <= shown_until_s + 1e-9);
+                &samples[start..start + count.max(before_cpa_count)]
+            }
+            _ => before_cpa,
+        };
         let courses: Vec<f64> = std::iter::once(latch.reference_course_rad)
             .chain(in_force.iter().map(|s| s.own.course_rad))
             .collect();
@@ -222,11 +237,9 @@ impl Measurements {
             action_time_s: action.map(|s| s.time_s),
             action_range_m: action.map(EncounterSample::range_m),
             first_turn_rad,
-            max_course_change_rad: largest_signed(before_cpa.iter().map(|s| turn_of(latch, s))),
-            max_speed_change_mps: largest_signed(
-                before_cpa.iter().map(|s| speed_change_of(latch, s)),
-            ),
-            max_speed_reduction_mps: before_cpa
+            max_course_change_rad: largest_signed(shown.iter().map(|s| turn_of(latch, s))),
+            max_speed_change_mps: largest_signed(shown.iter().map(|s| speed_change_of(latch, s))),
+            max_speed_reduction_mps: shown
                 .iter()
                 .map(|s| -speed_change_of(latch, s))
                 .fold(0.0, f64::max),

@@ -62,12 +62,13 @@
 //!     however wide the predicted pass (the published evaluators judge it
 //!     so); the manner of passing (port turn, starboard-to-starboard,
 //!     crossing ahead) is judged as well.
-//!   - [`LateAction`](ComplianceViolation::LateAction): where risk arose at
-//!     or beyond `late_action_range_m` (2 nm), the action began nearer;
-//!     where it arose nearer, the action began more than `reaction_time_s`
-//!     (60 s) after the latch.
+//!   - [`LateAction`](ComplianceViolation::LateAction): the action began
+//!     more than `reaction_time_s` (60 s) after the latch and, where risk
+//!     arose at or beyond `late_action_range_m` (2 nm), nearer than that.
 //!   - [`ActionNotApparent`](ComplianceViolation::ActionNotApparent): up to
-//!     the closest approach, the largest course change is under
+//!     the closest approach (and, where the encounter ended before it, up to
+//!     `reaction_time_s` after it ended, as a turn begun in force shows over
+//!     ground), the largest course change is under
 //!     [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30°) and the
 //!     largest speed reduction under `apparent_speed_reduction_fraction` of
 //!     the reference speed (one half).
@@ -127,7 +128,7 @@ mod tests;
 mod violation;
 
 pub use assessment::{EncounterAssessment, RuleScores};
-pub use recording::{EncounterSample, first_latch};
+pub use recording::{EncounterSample, first_latch, steady_courses_rad};
 pub use scoring::{PenaltyWeights, ScoringParameters, safety_score};
 pub use violation::ComplianceViolation;
 
