@@ -96,19 +96,58 @@ pub fn update_latch(
     time_s: f64,
     parameters: &RuleParameters,
 ) -> Option<EncounterLatch> {
+    update_latch_steady(current, own, own.course_rad, target, time_s, parameters)
+}
+
+/// As [`update_latch`], for an ownship that may have begun a turn shortly
+/// before: a new encounter is classified, and its reference course taken, on
+/// `steady_course_rad`, the course ownship held steadily before any turn of
+/// the last [`STEADY_COURSE_WINDOW_S`](crate::rules::STEADY_COURSE_WINDOW_S)
+/// (see [`steady_course_rad`](crate::rules::steady_course_rad)). An observer
+/// on the other vessel, judging course over ground over such a window, sees
+/// that course until the turn shows, so an alteration begun just before risk
+/// arose counts as action taken for the encounter (rules 8(b), 16), and a
+/// turn cannot dodge an encounter it was made for. Whether a latched
+/// encounter has passed is judged on the course steered (`own`).
+///
+/// ```
+/// use vorrt_colregs::{update_latch_steady, Encounter, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// // Ownship has just turned 35° to starboard from north; a vessel comes head-on.
+/// let own = VesselState::new(DVec2::ZERO, 35f64.to_radians(), 6.0, 50.0);
+/// let target = VesselState::new(DVec2::new(0.0, 6000.0), std::f64::consts::PI, 6.0, 50.0);
+/// let latch = update_latch_steady(None, &own, 0.0, &target, 0.0, &params).expect("risk");
+/// assert_eq!(latch.encounter, Encounter::HeadOn);
+/// assert_eq!(latch.reference_course_rad, 0.0);
+/// ```
+#[must_use]
+pub fn update_latch_steady(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    steady_course_rad: f64,
+    target: &VesselState,
+    time_s: f64,
+    parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
     match current {
         Some(latch) if has_passed(own, target, latch.encounter, parameters) => None,
         Some(latch) => Some(latch),
         None => {
             // Beyond MTD there is no risk (and no need to work out the CPA).
-            if !within_mtd(own.range_to(target), parameters)
-                || !assess_risk(own, target, parameters).at_risk
-            {
+            if !within_mtd(own.range_to(target), parameters) {
                 return None;
             }
-            match classify(own, target, parameters) {
+            let seen = VesselState {
+                course_rad: steady_course_rad,
+                ..*own
+            };
+            if !assess_risk(&seen, target, parameters).at_risk {
+                return None;
+            }
+            match classify(&seen, target, parameters) {
                 Encounter::None => None,
-                encounter => Some(EncounterLatch::new(encounter, own, time_s)),
+                encounter => Some(EncounterLatch::new(encounter, &seen, time_s)),
             }
         }
     }

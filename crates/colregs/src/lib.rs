@@ -56,10 +56,10 @@ pub use compliance::{
 };
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
-pub use latch::{EncounterLatch, has_passed, update_latch};
+pub use latch::{EncounterLatch, has_passed, update_latch, update_latch_steady};
 pub use maneuver::{
-    CandidateMotion, ManeuverViolation, check_action, check_alteration, check_maneuver,
-    check_maneuver_acting, check_motion, stand_on_may_act,
+    CandidateMotion, ManeuverViolation, check_action, check_alteration, check_heading,
+    check_maneuver, check_maneuver_acting, check_motion, stand_on_may_act,
 };
 pub use parameters::RuleParameters;
 pub use passing::{PassingSide, crosses_ahead, passing_side};

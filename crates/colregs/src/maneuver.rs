@@ -240,19 +240,19 @@ pub fn check_motion(
     stand_on_acting: bool,
     altered_rad: f64,
 ) -> Result<(), ManeuverViolation> {
+    check_heading(
+        latch,
+        own,
+        target_position_m,
+        parameters,
+        stand_on_acting,
+        altered_rad,
+    )?;
     let own_position_m = own.position_m;
-    let course_rad = own.course_rad;
-    let speed_mps = own.speed_mps;
     let own_velocity = own.velocity_mps;
     let target_velocity = target_velocity_mps;
-    let turn = rules::course_change_rad(latch.reference_course_rad, course_rad);
-    let turned_to_port = rules::is_port_turn(turn, parameters);
-    let eased_back = rules::is_readily_apparent(altered_rad, parameters) && -turn < altered_rad;
     match latch.encounter {
         Encounter::HeadOn => {
-            if turned_to_port && !eased_back {
-                return Err(ManeuverViolation::PortTurn);
-            }
             let closing =
                 (target_position_m - own_position_m).dot(own_velocity - target_velocity) > 0.0;
             if closing
@@ -268,9 +268,6 @@ pub fn check_motion(
             Ok(())
         }
         Encounter::CrossingGiveWay => {
-            if turned_to_port && !eased_back {
-                return Err(ManeuverViolation::PortTurn);
-            }
             if crosses_ahead(
                 own_position_m,
                 own_velocity,
@@ -281,6 +278,54 @@ pub fn check_motion(
             }
             Ok(())
         }
+        _ => Ok(()),
+    }
+}
+
+/// The part of [`check_motion`] that the heading alone decides, which an
+/// observer sees broken even while ownship is turning through it: no turn to
+/// port of the reference course in head-on and give-way crossing (unless
+/// easing back, see [`check_motion`]; rules 14, 15), a stand-on vessel that
+/// may not act keeps its course and speed (17(a)(i)), and one that acts does
+/// not turn to port for a vessel on its port side (17(c)). The predicted
+/// passes (starboard to starboard, crossing ahead) are judged on a settled
+/// course only.
+///
+/// ```
+/// use vorrt_colregs::{check_heading, CandidateMotion, EncounterLatch, Encounter, ManeuverViolation, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let latch = EncounterLatch::new(Encounter::CrossingStandOn, &own, 0.0);
+/// let turning = CandidateMotion::new(DVec2::ZERO, 20f64.to_radians(), 6.0);
+/// let target = DVec2::new(5000.0, 5000.0);
+/// // Far off, the stand-on vessel may not swing 20° off its course ...
+/// assert_eq!(check_heading(&latch, &turning, target, &params, false, 0.0),
+///            Err(ManeuverViolation::StandOnCourseChange));
+/// // ... but may once it may act.
+/// assert_eq!(check_heading(&latch, &turning, target, &params, true, 0.0), Ok(()));
+/// ```
+///
+/// # Errors
+/// The [`ManeuverViolation`] the heading commits.
+pub fn check_heading(
+    latch: &EncounterLatch,
+    own: &CandidateMotion,
+    target_position_m: DVec2,
+    parameters: &RuleParameters,
+    stand_on_acting: bool,
+    altered_rad: f64,
+) -> Result<(), ManeuverViolation> {
+    let turn = rules::course_change_rad(latch.reference_course_rad, own.course_rad);
+    let turned_to_port = rules::is_port_turn(turn, parameters);
+    let eased_back = rules::is_readily_apparent(altered_rad, parameters) && -turn < altered_rad;
+    match latch.encounter {
+        Encounter::HeadOn | Encounter::CrossingGiveWay => {
+            if turned_to_port && !eased_back {
+                return Err(ManeuverViolation::PortTurn);
+            }
+            Ok(())
+        }
         Encounter::CrossingStandOn | Encounter::BeingOvertaken => {
             if !rules::must_stand_on(latch.encounter, stand_on_acting) {
                 // The port side as seen on the course held (the reference),
@@ -288,7 +333,7 @@ pub fn check_motion(
                 if latch.encounter == Encounter::CrossingStandOn
                     && turned_to_port
                     && rules::is_on_port_side(
-                        own_position_m,
+                        own.position_m,
                         latch.reference_course_rad,
                         target_position_m,
                     )
@@ -300,7 +345,7 @@ pub fn check_motion(
             if rules::is_stand_on_course_change(turn, parameters) {
                 return Err(ManeuverViolation::StandOnCourseChange);
             }
-            if rules::is_speed_change(speed_mps - latch.reference_speed_mps, parameters) {
+            if rules::is_speed_change(own.speed_mps - latch.reference_speed_mps, parameters) {
                 return Err(ManeuverViolation::StandOnSpeedChange);
             }
             Ok(())

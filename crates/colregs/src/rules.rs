@@ -74,11 +74,83 @@ pub fn course_change_rad(reference_course_rad: f64, course_rad: f64) -> f64 {
     angle::signed_turn(reference_course_rad, course_rad)
 }
 
+/// How far back an observer's view of ownship's course reaches, seconds: the
+/// window over which radar and AIS show course over ground (60 s, as the
+/// published evaluators observe it; `docs/evaluation.md`).
+pub const STEADY_COURSE_WINDOW_S: f64 = 60.0;
+
+/// The rate of course change above which ownship counts as turning when its
+/// steady course is sought ([`steady_course_rad`]), rad/s (3° a minute): well
+/// under the rates ships alter course at (0.2-0.5°/s, `docs/architecture.md`)
+/// and above the wander of a course held.
+pub const STEADY_TURN_RATE_RAD_S: f64 = 0.05 * std::f64::consts::PI / 180.0;
+
+/// The course ownship held steadily before any recent turn, from its course
+/// history (`times_s` ascending, the last one now, one course per time): the
+/// course `look_back_s` ago, or, if a turn (faster than
+/// [`STEADY_TURN_RATE_RAD_S`]) was under way then, the course before that turn
+/// began, looking back at most [`STEADY_TURN_SEARCH_S`] more. `None` for an
+/// empty history. A new encounter is judged against this course
+/// ([`update_latch_steady`](crate::update_latch_steady)).
+///
+/// On courses steered (the planner, the closed loop) `look_back_s` is the
+/// observation window [`STEADY_COURSE_WINDOW_S`]: a turn of the last minute
+/// does not yet show over ground. On courses over ground observed over that
+/// window (the evaluation as observed) it is 0: the lag is in the
+/// observation already, and a course over ground still changing now is a
+/// turn under way.
+///
+/// ```
+/// use vorrt_colregs::rules::{steady_course_rad, STEADY_COURSE_WINDOW_S};
+/// // North until 100 s, then turning 5° per 10 s to starboard until 200 s.
+/// let times: Vec<f64> = (0..=30).map(|i| 10.0 * f64::from(i)).collect();
+/// let courses: Vec<f64> = times
+///     .iter()
+///     .map(|t| (0.5 * (t.min(200.0) - 100.0).max(0.0)).to_radians())
+///     .collect();
+/// let window = STEADY_COURSE_WINDOW_S;
+/// // At 150 s the turn began 50 s ago: the course before it.
+/// assert_eq!(steady_course_rad(&times[..16], &courses[..16], window), Some(0.0));
+/// // At 200 s, 60 s ago it was already turning: the course before the turn.
+/// assert_eq!(steady_course_rad(&times[..21], &courses[..21], window), Some(0.0));
+/// // At 300 s the turn ended 100 s ago: the new course.
+/// assert_eq!(steady_course_rad(&times, &courses, window), Some(50f64.to_radians()));
+/// // Looking back 0 s at 150 s (courses over ground): still turning, so 0°.
+/// assert_eq!(steady_course_rad(&times[..16], &courses[..16], 0.0), Some(0.0));
+/// ```
+#[must_use]
+pub fn steady_course_rad(times_s: &[f64], courses_rad: &[f64], look_back_s: f64) -> Option<f64> {
+    let count = times_s.len().min(courses_rad.len());
+    let now_s = *times_s.get(count.checked_sub(1)?)?;
+    let mut index = count - 1;
+    while index > 0 && times_s[index - 1] >= now_s - look_back_s {
+        index -= 1;
+    }
+    let search_from_s = times_s[index] - STEADY_TURN_SEARCH_S;
+    while index > 0 && times_s[index - 1] >= search_from_s {
+        let step_s = times_s[index] - times_s[index - 1];
+        let turned = angle::signed_turn(courses_rad[index - 1], courses_rad[index]).abs();
+        if turned <= STEADY_TURN_RATE_RAD_S * step_s + 1e-9 {
+            break;
+        }
+        index -= 1;
+    }
+    Some(courses_rad[index])
+}
+
+/// How far back [`steady_course_rad`] looks for the start of a turn under
+/// way, seconds: long enough for a 90° alteration at 0.5°/s and the window
+/// over which it shows.
+pub const STEADY_TURN_SEARCH_S: f64 = 240.0;
+
 /// The largest alteration from the reference made for an encounter, radians
 /// (rules 8(b), 16), after ownship takes `course_rad` while the latch goes
-/// from `before` to `now`: it grows while the same latch holds, and a new or
-/// released latch starts from none. The planner keeps it along a branch and
-/// the closed loop along the track sailed, with this one rule.
+/// from `before` to `now`: it grows while the same latch holds; a new latch
+/// starts from the change between its reference (the steady course, see
+/// [`update_latch_steady`](crate::update_latch_steady)) and `course_rad`, the
+/// alteration already begun; with no latch there is none. The planner keeps
+/// it along a branch and the closed loop along the track sailed, with this
+/// one rule.
 ///
 /// ```
 /// use vorrt_colregs::{rules::alteration_made, Encounter, EncounterLatch, VesselState};
@@ -89,8 +161,11 @@ pub fn course_change_rad(reference_course_rad: f64, course_rad: f64) -> f64 {
 /// assert!((altered - 35f64.to_radians()).abs() < 1e-12);
 /// // Easing back keeps the largest alteration made.
 /// assert_eq!(alteration_made(latch, latch, altered, 10f64.to_radians()), altered);
-/// // A new encounter starts from none.
-/// assert_eq!(alteration_made(None, latch, altered, 10f64.to_radians()), 0.0);
+/// // A new encounter starts from the alteration already begun from its
+/// // reference; with none in force there is none.
+/// let started = alteration_made(None, latch, altered, 10f64.to_radians());
+/// assert!((started - 10f64.to_radians()).abs() < 1e-12);
+/// assert_eq!(alteration_made(latch, None, altered, 10f64.to_radians()), 0.0);
 /// ```
 #[must_use]
 pub fn alteration_made(
@@ -103,7 +178,8 @@ pub fn alteration_made(
         (Some(now), Some(was)) if now == was => {
             altered_rad.max(course_change_rad(now.reference_course_rad, course_rad).abs())
         }
-        _ => 0.0,
+        (Some(now), _) => course_change_rad(now.reference_course_rad, course_rad).abs(),
+        (None, _) => 0.0,
     }
 }
 

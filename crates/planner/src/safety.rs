@@ -26,9 +26,10 @@
 use crate::config::{Compliance, PlannerConfig};
 use crate::plan::RejectionCause;
 use glam::DVec2;
+use vorrt_colregs::rules::{giving_way_to_any, may_act};
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, Role, VesselState, check_action, check_alteration,
-    check_motion,
+    check_heading, check_motion,
 };
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
@@ -147,6 +148,61 @@ impl<'a> SafetyChecker<'a> {
         Ok(())
     }
 
+    /// Checks a chord of a turn: every target keeps `d_th` plus `margin_m`
+    /// ([`check_clearance`](Self::check_clearance)), and the heading swept
+    /// through breaks no rule an observer would see broken on the way
+    /// ([`vorrt_colregs::check_heading`] for every encounter in force at
+    /// the turn's start): a stand-on vessel that may not yet act keeps its course
+    /// through the turn too (rule 17(a)(i)), and a turn to port for a vessel
+    /// on the port side is one whichever course it settles on (rules 14,
+    /// 15, 17(c)). The rules that judge the alteration made (its size, when
+    /// it began, that it is held) judge the settled course, as an observer
+    /// does (rule 8(b)), so they are not applied here.
+    ///
+    /// # Errors
+    /// The first [`RejectionCause`] the chord runs into.
+    pub fn check_turning(
+        &self,
+        candidate: &Move,
+        latches: &[Option<EncounterLatch>],
+        alterations: &[f64],
+        margin_m: f64,
+    ) -> Result<(), RejectionCause> {
+        self.check_clearance(candidate, margin_m)?;
+        if self.config.compliance == Compliance::SafetyOnly {
+            return Ok(());
+        }
+        let giving_way = giving_way_to_any(latches.iter().flatten());
+        let motion = self.candidate_motion(candidate);
+        for (index, track) in self.tracks.iter().enumerate() {
+            let Some(latch) = latches.get(index).copied().flatten() else {
+                continue;
+            };
+            let target_position = track.position_at(candidate.start_elapsed_s);
+            let range = candidate.start_m.distance(target_position);
+            check_heading(
+                &latch,
+                &motion,
+                target_position,
+                &self.config.rules,
+                may_act(range, giving_way, &self.config.rules),
+                alterations.get(index).copied().unwrap_or(0.0),
+            )
+            .map_err(RejectionCause::Colregs)?;
+        }
+        Ok(())
+    }
+
+    /// Ownship's motion along `candidate`, as the rule checks see it.
+    fn candidate_motion(&self, candidate: &Move) -> CandidateMotion {
+        CandidateMotion {
+            position_m: candidate.start_m,
+            course_rad: candidate.course_rad,
+            speed_mps: self.ownship.speed_mps,
+            velocity_mps: candidate.velocity_mps,
+        }
+    }
+
     /// Checks one move given the encounters in force at its parent.
     ///
     /// # Errors
@@ -162,16 +218,8 @@ impl<'a> SafetyChecker<'a> {
         let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
         let to_goal_s = end_m.distance(self.goal_m) / self.ownship.speed_mps;
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
-        let giving_way = latches
-            .iter()
-            .flatten()
-            .any(|latch| latch.encounter.role() == Role::GiveWay);
-        let motion = CandidateMotion {
-            position_m: candidate.start_m,
-            course_rad: candidate.course_rad,
-            speed_mps: self.ownship.speed_mps,
-            velocity_mps: candidate.velocity_mps,
-        };
+        let giving_way = giving_way_to_any(latches.iter().flatten());
+        let motion = self.candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
             let target_position = track.position_at(candidate.start_elapsed_s);
             let target_velocity = track.velocity_at(candidate.start_elapsed_s);
@@ -188,7 +236,7 @@ impl<'a> SafetyChecker<'a> {
                     continue;
                 }
             }
-            let acting = giving_way || range <= rules.stand_on_action_range_m;
+            let acting = may_act(range, giving_way, rules);
             let waived =
                 latch.is_some_and(|latch| latch.encounter.role() == Role::StandOn && !acting);
             let near = range < rules.mtd_m && !waived;

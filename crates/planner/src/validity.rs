@@ -10,16 +10,17 @@
 //! [`SafetyChecker`] is the planner's validator (paper, Algorithm 3, see
 //! [`crate::safety`]). A leg is cut into pieces: the chords of its turn are
 //! checked for clearance along the curve actually sailed (`d_th` plus the
-//! chord's largest distance from the arc); the pieces of its straight run, on
-//! the settled course, get every check (velocity obstacle, clearance, clearance
-//! ahead, COLREGs). A turn is judged as a manoeuvre by the course it settles
-//! on, as an observer judges an alteration (rule 8(b)): the headings swept
-//! through on the way are transient.
+//! chord's largest distance from the arc) and for the rules an observer sees
+//! broken on the way (a stand-on vessel's course, a turn to port); the pieces
+//! of its straight run, on the settled course, get every check (velocity
+//! obstacle, clearance, clearance ahead, COLREGs). A turn is judged as an
+//! alteration by the course it settles on, as an observer judges one (rule
+//! 8(b)): the headings swept through on the way are transient.
 
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
-use vorrt_colregs::rules::alteration_made;
-use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch};
+use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, alteration_made, steady_course_rad};
+use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_steady};
 use vorrt_jfs::{Leg, LinearTrack};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -44,12 +45,14 @@ impl EncounterState {
 
     /// Advances every encounter to ownship's state `own_then`, at `elapsed_s`
     /// after the tracks' time zero (`time_s` on the clock): latches are
-    /// updated from the new geometry, and the alteration made for a latch
-    /// that holds grows to `own_then`'s course; a new or released latch starts
-    /// from no alteration.
+    /// updated from the new geometry (a new one judged on `steady_course_rad`,
+    /// the course held before any recent turn: [`update_latch_steady`]), and
+    /// the alteration made grows to `own_then`'s course
+    /// ([`alteration_made`]).
     pub fn advance(
         &mut self,
         own_then: &VesselState,
+        steady_course_rad: f64,
         tracks: &[LinearTrack],
         elapsed_s: f64,
         time_s: f64,
@@ -62,7 +65,14 @@ impl EncounterState {
             .zip(tracks)
         {
             let before = *latch;
-            *latch = update_latch(before, own_then, &track.state_at(elapsed_s), time_s, rules);
+            *latch = update_latch_steady(
+                before,
+                own_then,
+                steady_course_rad,
+                &track.state_at(elapsed_s),
+                time_s,
+                rules,
+            );
             *altered = alteration_made(before, *latch, *altered, own_then.course_rad);
         }
     }
@@ -125,10 +135,17 @@ impl MotionValidator for SafetyChecker<'_> {
                 duration_s: piece.duration_s,
             };
             if piece.turning {
-                // The encounters are judged, and advanced, on the course the
-                // turn settles on: a heading swept through neither passes an
-                // encounter nor makes an alteration.
-                self.check_clearance(&candidate, chord_error_m)?;
+                // The encounters are advanced, and the alteration judged, on
+                // the course the turn settles on: a heading swept through
+                // neither passes an encounter nor makes an alteration. But a
+                // stand-on vessel's course, and a turn to port, are seen on
+                // the way (SafetyChecker::check_turning).
+                self.check_turning(
+                    &candidate,
+                    &state.latches,
+                    &state.alterations,
+                    chord_error_m,
+                )?;
                 continue;
             }
             self.check(&candidate, &state.latches, &state.alterations)?;
@@ -138,8 +155,18 @@ impl MotionValidator for SafetyChecker<'_> {
                 course_rad: piece.course_rad,
                 ..self.ownship
             };
+            // The course an observer still sees steady: before this leg's
+            // turn while the turn is within the window.
+            let turn_end_s = start_elapsed_s + leg.turn_duration_s();
+            let steady_course_rad = steady_course_rad(
+                &[start_elapsed_s, turn_end_s, end_elapsed_s],
+                &[leg.start_course_rad, leg.course_rad, leg.course_rad],
+                STEADY_COURSE_WINDOW_S,
+            )
+            .unwrap_or(leg.course_rad);
             state.advance(
                 &own_then,
+                steady_course_rad,
                 self.tracks,
                 end_elapsed_s,
                 self.start_time_s + end_elapsed_s,

@@ -56,3 +56,68 @@ fn head_on_and_crossing_give_way_early_readily_apparent_to_starboard_without_fin
         );
     }
 }
+
+/// A one-target open-sea scenario (the generator's format), ownship north.
+fn one_target(speed_kn: f64, goal_nm: f64, target: &str) -> Scenario {
+    let text = format!(
+        r#"Scenario(
+    name: "case",
+    ownship: Vessel(name: "ownship", start_nm: (0.0, 0.0), course_deg: 0.0,
+        speed_kn: {speed_kn}, length_m: 100.0, goal_nm: (0.0, {goal_nm})),
+    targets: [{target}],
+)"#
+    );
+    Scenario::from_ron_str(&text, "case.ron").expect("valid scenario")
+}
+
+/// A head-on vessel just beyond the range at which risk is judged: the
+/// alteration ownship begins before the encounter is latched is the action
+/// for it (the encounter is judged against the course held steadily before
+/// the turn: `rules::steady_course_rad`), so it is readily apparent as
+/// observed, not a small alteration made before the encounter began.
+#[test]
+fn alteration_begun_just_before_risk_counts_as_the_action() {
+    let scenario = one_target(
+        12.0,
+        8.24,
+        r#"Vessel(name: "TS1", start_nm: (-0.0726, 5.2007), course_deg: 177.69,
+            speed_kn: 11.75, length_m: 242.0, goal_nm: (0.978, -20.851))"#,
+    );
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    let target = &evaluation.targets[0];
+    assert_eq!(target.encounter, Encounter::HeadOn);
+    let largest = target.max_alteration_deg.expect("assessed");
+    assert!(largest >= 30.0, "largest alteration {largest}°");
+    assert!(evaluation.compliant, "{:?}", target.violations);
+}
+
+/// A stand-on vessel in a crossing from port, far off, and one overtaking
+/// from the starboard quarter within reach of the action range: ownship's
+/// turns (whenever they are made, and the headings swept through on the way)
+/// break neither rule 17(a)(i) nor 17(c) as observed.
+#[test]
+fn stand_on_turns_keep_rule_17_along_the_whole_turn() {
+    for (speed_kn, goal_nm, target) in [
+        (
+            11.9,
+            10.26,
+            r#"Vessel(name: "TS1", start_nm: (-5.4342, 7.2311), course_deg: 118.0,
+            speed_kn: 17.69, length_m: 180.0, goal_nm: (31.337, -12.32))"#,
+        ),
+        (
+            12.4,
+            11.15,
+            r#"Vessel(name: "TS1", start_nm: (0.8531, -2.1363), course_deg: 352.98,
+            speed_kn: 20.19, length_m: 120.0, goal_nm: (-4.788, 43.672))"#,
+        ),
+    ] {
+        let scenario = one_target(speed_kn, goal_nm, target);
+        let record = simulate(&scenario, 1).expect("valid settings");
+        let evaluation = evaluate(&scenario, &record);
+        let judged = &evaluation.targets[0];
+        assert_eq!(judged.role, Role::StandOn, "{target}");
+        assert!(!judged.collision && judged.clearance_kept, "{target}");
+        assert!(evaluation.compliant, "{target}: {:?}", judged.violations);
+    }
+}

@@ -8,10 +8,10 @@ use super::{ObservedParameters, RecordedTrack, Recording};
 use crate::compliance::measure::closest_approach;
 use crate::compliance::{
     ComplianceViolation, EncounterAssessment, EncounterSample, assess_encounter_acting,
-    first_latch, safety_score,
+    first_latch, safety_score, steady_courses_rad,
 };
 use crate::error::ColregsError;
-use crate::latch::{EncounterLatch, update_latch};
+use crate::latch::{EncounterLatch, update_latch_steady};
 use crate::rules::{gives_way, in_contact, keeps_clearance};
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
@@ -198,12 +198,18 @@ fn observed_states(track: &RecordedTrack, observed: &[OverGround]) -> Vec<Vessel
 fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParameters) -> Vec<bool> {
     let count = samples.first().map_or(0, Vec::len);
     let mut giving_way = vec![false; count];
+    let steady = samples.first().map(|track| steady_courses_rad(track));
     for track in samples {
         let mut latch = None;
-        for (sample, giving) in track.iter().zip(giving_way.iter_mut()) {
-            latch = update_latch(
+        for ((sample, giving), steady_course_rad) in track
+            .iter()
+            .zip(giving_way.iter_mut())
+            .zip(steady.iter().flatten())
+        {
+            latch = update_latch_steady(
                 latch,
                 &sample.own,
+                *steady_course_rad,
                 &sample.target,
                 sample.time_s,
                 &parameters.rules,

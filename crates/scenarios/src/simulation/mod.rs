@@ -26,7 +26,8 @@ use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::alteration_made;
-use vorrt_colregs::{EncounterLatch, VesselState, update_latch};
+use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
+use vorrt_colregs::{EncounterLatch, VesselState, update_latch_steady};
 use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
     Compliance, PlanStatistics, Planner, PlannerConfig, PlanningProblem, Waypoint, check_legs,
@@ -330,15 +331,29 @@ pub fn simulate_with(
     let mut retry_at_s = f64::INFINITY;
     let mut time_s = 0.0;
     let mut step = 0usize;
+    // Ownship's courses so far, for the course an observer still sees
+    // steady (rules::steady_course_rad).
+    let mut own_courses_rad: Vec<f64> = Vec::new();
     loop {
+        own_courses_rad.push(own.course_rad);
+        record.times_s.push(time_s);
+        let steady_course_rad =
+            steady_course_rad(&record.times_s, &own_courses_rad, STEADY_COURSE_WINDOW_S)
+                .unwrap_or(own.course_rad);
         for ((latch, altered), target) in latches.iter_mut().zip(&mut alterations).zip(&targets) {
             let before = *latch;
-            *latch = update_latch(before, &own, &target.state.vessel, time_s, &config.rules);
+            *latch = update_latch_steady(
+                before,
+                &own,
+                steady_course_rad,
+                &target.state.vessel,
+                time_s,
+                &config.rules,
+            );
             // The alteration made for an encounter, as the planner counts it
             // along a branch (rule 16).
             *altered = alteration_made(before, *latch, *altered, own.course_rad);
         }
-        record.times_s.push(time_s);
         record.ownship.push(own);
         for (track, target) in record.targets.iter_mut().zip(&targets) {
             track.push(target.state.vessel);
