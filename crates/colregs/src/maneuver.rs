@@ -342,7 +342,14 @@ pub fn check_heading(
                 }
                 return Ok(());
             }
-            if rules::is_stand_on_course_change(turn, parameters) {
+            // The course to keep: the reference, or the one last taken
+            // while giving way to another vessel (`altered_rad` carries it
+            // for a stand-on encounter, rules::alteration_made).
+            let kept = rules::course_change_rad(
+                rules::stand_on_course_rad(latch, altered_rad),
+                own.course_rad,
+            );
+            if rules::is_stand_on_course_change(kept, parameters) {
                 return Err(ManeuverViolation::StandOnCourseChange);
             }
             if rules::is_speed_change(own.speed_mps - latch.reference_speed_mps, parameters) {

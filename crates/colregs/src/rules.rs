@@ -143,29 +143,44 @@ pub fn steady_course_rad(times_s: &[f64], courses_rad: &[f64], look_back_s: f64)
 /// over which it shows.
 pub const STEADY_TURN_SEARCH_S: f64 = 240.0;
 
-/// The largest alteration from the reference made for an encounter, radians
-/// (rules 8(b), 16), after ownship takes `course_rad` while the latch goes
-/// from `before` to `now`: it grows while the same latch holds; a new latch
-/// starts from the change between its reference (the steady course, see
-/// [`update_latch_steady`](crate::update_latch_steady)) and `course_rad`, the
-/// alteration already begun; with no latch there is none. The planner keeps
-/// it along a branch and the closed loop along the track sailed, with this
-/// one rule.
+/// What ownship carries for an encounter from one instant to the next, after
+/// it takes `course_rad` while the latch goes from `before` to `now`
+/// (`acting_for_others`: it gives way to some other vessel then), radians.
+/// The planner keeps it along a branch and the closed loop along the track
+/// sailed, with this one rule.
+///
+/// - **Give-way** (rules 8(b), 16): the largest alteration from the reference
+///   made; it grows while the same latch holds, and a new latch starts from
+///   the change between its reference (the steady course, see
+///   [`update_latch_steady`](crate::update_latch_steady)) and `course_rad`,
+///   the alteration already begun.
+/// - **Stand-on** (rule 17(a)(i)): the course change from the reference that
+///   ownship was last free to make, while it gave way to another vessel
+///   (with several vessels rule 17 yields to the duty to keep out of the way,
+///   [`may_act`]); the course it must then keep is the reference plus this
+///   ([`stand_on_course_rad`]). A new latch starts from none.
+///
+/// With no latch in force there is nothing (0).
 ///
 /// ```
 /// use vorrt_colregs::{rules::alteration_made, Encounter, EncounterLatch, VesselState};
 /// use glam::DVec2;
 /// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
 /// let latch = Some(EncounterLatch::new(Encounter::HeadOn, &own, 0.0));
-/// let altered = alteration_made(latch, latch, 0.0, 35f64.to_radians());
+/// let altered = alteration_made(latch, latch, 0.0, 35f64.to_radians(), false);
 /// assert!((altered - 35f64.to_radians()).abs() < 1e-12);
 /// // Easing back keeps the largest alteration made.
-/// assert_eq!(alteration_made(latch, latch, altered, 10f64.to_radians()), altered);
+/// assert_eq!(alteration_made(latch, latch, altered, 10f64.to_radians(), false), altered);
 /// // A new encounter starts from the alteration already begun from its
 /// // reference; with none in force there is none.
-/// let started = alteration_made(None, latch, altered, 10f64.to_radians());
+/// let started = alteration_made(None, latch, altered, 10f64.to_radians(), false);
 /// assert!((started - 10f64.to_radians()).abs() < 1e-12);
-/// assert_eq!(alteration_made(latch, None, altered, 10f64.to_radians()), 0.0);
+/// assert_eq!(alteration_made(latch, None, altered, 10f64.to_radians(), false), 0.0);
+/// // Standing on: the course taken while giving way to another is kept.
+/// let stand_on = Some(EncounterLatch::new(Encounter::BeingOvertaken, &own, 0.0));
+/// let offset = alteration_made(stand_on, stand_on, 0.0, 35f64.to_radians(), true);
+/// assert!((offset - 35f64.to_radians()).abs() < 1e-12);
+/// assert_eq!(alteration_made(stand_on, stand_on, offset, 0.0, false), offset);
 /// ```
 #[must_use]
 pub fn alteration_made(
@@ -173,14 +188,39 @@ pub fn alteration_made(
     now: Option<EncounterLatch>,
     altered_rad: f64,
     course_rad: f64,
+    acting_for_others: bool,
 ) -> f64 {
-    match (now, before) {
-        (Some(now), Some(was)) if now == was => {
-            altered_rad.max(course_change_rad(now.reference_course_rad, course_rad).abs())
-        }
-        (Some(now), _) => course_change_rad(now.reference_course_rad, course_rad).abs(),
-        (None, _) => 0.0,
+    let Some(latch) = now else {
+        return 0.0;
+    };
+    let same = before == now;
+    let change = course_change_rad(latch.reference_course_rad, course_rad);
+    match latch.encounter.role() {
+        Role::StandOn => match (same, acting_for_others) {
+            (_, true) => change,
+            (true, false) => altered_rad,
+            (false, false) => 0.0,
+        },
+        _ if same => altered_rad.max(change.abs()),
+        _ => change.abs(),
     }
+}
+
+/// The course a stand-on vessel must keep while it may not act (rule
+/// 17(a)(i)): the latch's reference course plus the change it was last free
+/// to make while giving way to another vessel (`offset_rad`, see
+/// [`alteration_made`]), radians.
+///
+/// ```
+/// use vorrt_colregs::{rules::stand_on_course_rad, Encounter, EncounterLatch, VesselState};
+/// use glam::DVec2;
+/// let own = VesselState::new(DVec2::ZERO, 0.5, 6.0, 50.0);
+/// let latch = EncounterLatch::new(Encounter::CrossingStandOn, &own, 0.0);
+/// assert!((stand_on_course_rad(&latch, 0.25) - 0.75).abs() < 1e-12);
+/// ```
+#[must_use]
+pub fn stand_on_course_rad(latch: &EncounterLatch, offset_rad: f64) -> f64 {
+    angle::normalize_2pi(latch.reference_course_rad + offset_rad)
 }
 
 /// Whether a course change (from [`course_change_rad`]) is a turn at all:

@@ -497,3 +497,51 @@ proptest! {
         prop_assert!(a.violations.iter().any(|v| v.name() == "collision"));
     }
 }
+
+/// A stand-on vessel that also had to give way to another vessel (from 60 s
+/// to 150 s) turned 30° to starboard then: holding that course afterwards is
+/// keeping its course (rule 17(a)(i), the course last taken while free to
+/// act), and turning back before the action range is changing it.
+#[test]
+fn stand_on_keeps_the_course_taken_while_giving_way_to_another() {
+    let rules = RuleParameters::default();
+    let judge = |own_plan: &[Leg]| {
+        let samples = simulate(
+            DVec2::ZERO,
+            own_plan,
+            DVec2::new(-4000.0, 4000.0),
+            &[leg(0.0, 90.0, 6.0)],
+            1800.0,
+            5.0,
+        );
+        let giving_way: Vec<bool> = samples
+            .iter()
+            .map(|s| (60.0..=150.0).contains(&s.time_s))
+            .collect();
+        let latch = first_latch(&samples, &rules).expect("risk of collision arises");
+        assert_eq!(latch.encounter, Encounter::CrossingStandOn);
+        vorrt_colregs::compliance::assess_encounter_acting(
+            &samples,
+            &latch,
+            &rules,
+            &ScoringParameters::default(),
+            &giving_way,
+        )
+    };
+    let held = judge(&[leg(0.0, 0.0, 6.0), leg(60.0, 30.0, 6.0)]);
+    assert!(
+        !has(&held, "stand_on_course_changed"),
+        "{:?}",
+        held.violations
+    );
+    let returned = judge(&[
+        leg(0.0, 0.0, 6.0),
+        leg(60.0, 30.0, 6.0),
+        leg(200.0, 0.0, 6.0),
+    ]);
+    assert!(
+        has(&returned, "stand_on_course_changed"),
+        "{:?}",
+        returned.violations
+    );
+}

@@ -15,17 +15,23 @@
 //! of its straight run, on the settled course, get every check (velocity
 //! obstacle, clearance, clearance ahead, COLREGs). A turn is judged as an
 //! alteration by the course it settles on, as an observer judges one (rule
-//! 8(b)): the headings swept through on the way are transient.
+//! 8(b)): the headings swept through on the way are transient. The
+//! encounters move on after every piece, turning or not, as the closed loop
+//! moves them at every step.
 
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
-use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, alteration_made, steady_course_rad};
+use vorrt_colregs::rules::{
+    STEADY_COURSE_WINDOW_S, alteration_made, giving_way_to_any, steady_course_rad,
+};
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_steady};
 use vorrt_jfs::{Leg, LinearTrack};
 
 /// The encounters in force at one point of a branch: per target, the latch
-/// (rules 13-17) and the largest alteration of course from its reference made
-/// since it began, radians (rule 16, readily apparent).
+/// (rules 13-17) and what ownship carries for it ([`alteration_made`]: for a
+/// give-way encounter the largest alteration of course from its reference
+/// made since it began, rule 16; for a stand-on one the course change it was
+/// last free to make, rule 17), radians.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct EncounterState {
     /// Each target's encounter in force, if any.
@@ -58,6 +64,9 @@ impl EncounterState {
         time_s: f64,
         rules: &RuleParameters,
     ) {
+        // Whether ownship was giving way to some vessel up to now: a stand-on
+        // encounter then carries the course it was free to take.
+        let acting_for_others = giving_way_to_any(self.latches.iter().flatten());
         for ((latch, altered), track) in self
             .latches
             .iter_mut()
@@ -73,7 +82,13 @@ impl EncounterState {
                 time_s,
                 rules,
             );
-            *altered = alteration_made(before, *latch, *altered, own_then.course_rad);
+            *altered = alteration_made(
+                before,
+                *latch,
+                *altered,
+                own_then.course_rad,
+                acting_for_others,
+            );
         }
     }
 }
@@ -135,35 +150,47 @@ impl MotionValidator for SafetyChecker<'_> {
                 duration_s: piece.duration_s,
             };
             if piece.turning {
-                // The encounters are advanced, and the alteration judged, on
-                // the course the turn settles on: a heading swept through
-                // neither passes an encounter nor makes an alteration. But a
-                // stand-on vessel's course, and a turn to port, are seen on
-                // the way (SafetyChecker::check_turning).
+                // A turn is judged as an alteration by the course it settles
+                // on (rule 8(b)); but a stand-on vessel's course, and a turn
+                // to port, are seen on the way (check_turning), and the
+                // encounters move on as the turn is sailed, as the closed loop
+                // moves them at every step.
                 self.check_turning(
                     &candidate,
                     &state.latches,
                     &state.alterations,
                     chord_error_m,
                 )?;
-                continue;
+            } else {
+                self.check(&candidate, &state.latches, &state.alterations)?;
             }
-            self.check(&candidate, &state.latches, &state.alterations)?;
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
+            let (course_rad, steady_course_rad) = if piece.turning {
+                // Heading at the chord's end; the course before the turn is
+                // still the steady one while the turn is under way.
+                let heading_rad = leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad;
+                let steady = steady_course_rad(
+                    &[start_elapsed_s, end_elapsed_s],
+                    &[leg.start_course_rad, heading_rad],
+                    STEADY_COURSE_WINDOW_S,
+                );
+                (heading_rad, steady.unwrap_or(heading_rad))
+            } else {
+                // The course an observer still sees steady: before this
+                // leg's turn while the turn is within the window.
+                let turn_end_s = start_elapsed_s + leg.turn_duration_s();
+                let steady = steady_course_rad(
+                    &[start_elapsed_s, turn_end_s, end_elapsed_s],
+                    &[leg.start_course_rad, leg.course_rad, leg.course_rad],
+                    STEADY_COURSE_WINDOW_S,
+                );
+                (piece.course_rad, steady.unwrap_or(piece.course_rad))
+            };
             let own_then = VesselState {
                 position_m: piece.end_m(),
-                course_rad: piece.course_rad,
+                course_rad,
                 ..self.ownship
             };
-            // The course an observer still sees steady: before this leg's
-            // turn while the turn is within the window.
-            let turn_end_s = start_elapsed_s + leg.turn_duration_s();
-            let steady_course_rad = steady_course_rad(
-                &[start_elapsed_s, turn_end_s, end_elapsed_s],
-                &[leg.start_course_rad, leg.course_rad, leg.course_rad],
-                STEADY_COURSE_WINDOW_S,
-            )
-            .unwrap_or(leg.course_rad);
             state.advance(
                 &own_then,
                 steady_course_rad,

@@ -121,3 +121,40 @@ fn stand_on_turns_keep_rule_17_along_the_whole_turn() {
         assert!(evaluation.compliant, "{target}: {:?}", judged.violations);
     }
 }
+
+/// Ownship gives way to a head-on vessel while another overtakes it from
+/// far astern: the course it altered to is the one it then keeps for the
+/// overtaking vessel (rule 17(a)(i) yields to the duty to keep out of the
+/// way), and it does not turn back while that vessel is beyond the action
+/// range, so the run has no finding.
+#[test]
+fn stand_on_keeps_the_course_taken_while_giving_way_to_another() {
+    let text = r#"Scenario(
+    name: "overtaken-and-head-on",
+    ownship: Vessel(name: "ownship", start_nm: (0.0, 0.0), course_deg: 0.0,
+        speed_kn: 11.0, length_m: 100.0, goal_nm: (0.0, 10.12)),
+    targets: [
+        Vessel(name: "TS1", start_nm: (-0.4035, -4.0249), course_deg: 4.64,
+            speed_kn: 20.94, length_m: 206.0, goal_nm: (3.667, 46.13)),
+        Vessel(name: "TS2", start_nm: (0.145, 4.6997), course_deg: 185.39,
+            speed_kn: 16.66, length_m: 241.0, goal_nm: (-3.251, -31.295)),
+    ],
+)"#;
+    let scenario = Scenario::from_ron_str(text, "case.ron").expect("valid scenario");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert_eq!(evaluation.targets[0].role, Role::StandOn);
+    assert_eq!(evaluation.targets[1].encounter, Encounter::HeadOn);
+    for target in &evaluation.targets {
+        assert!(target.clearance_kept, "{}", target.name);
+    }
+    assert!(
+        evaluation.compliant,
+        "{:?}",
+        evaluation
+            .targets
+            .iter()
+            .map(|t| &t.violations)
+            .collect::<Vec<_>>()
+    );
+}

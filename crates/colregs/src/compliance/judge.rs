@@ -9,8 +9,8 @@ use crate::latch::EncounterLatch;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    is_measured_readily_apparent, is_on_port_side, is_port_turn, is_speed_change,
-    is_stand_on_course_change,
+    course_change_rad, is_measured_readily_apparent, is_on_port_side, is_port_turn,
+    is_speed_change, is_stand_on_course_change,
 };
 
 /// The findings and rule scores built up by the judgement steps.
@@ -216,11 +216,23 @@ impl Findings {
         rules: &RuleParameters,
         scoring: &ScoringParameters,
         may_act: impl Fn(&EncounterSample) -> bool,
+        giving_way: impl Fn(&EncounterSample) -> bool,
     ) {
         let weights = &scoring.penalties;
         let mut penalties = Vec::new();
         let early = || in_force.iter().filter(|s| !may_act(s));
-        let early_turn = largest_signed(early().map(|s| turn_of(latch, s)));
+        // The course to keep: the reference, or the one last taken while
+        // giving way to another vessel (rules::alteration_made, as the
+        // planner carries it).
+        let mut kept_course_rad = latch.reference_course_rad;
+        let early_turn = largest_signed(in_force.iter().filter_map(|s| {
+            if giving_way(s) {
+                kept_course_rad = s.own.course_rad;
+                None
+            } else {
+                (!may_act(s)).then(|| course_change_rad(kept_course_rad, s.own.course_rad))
+            }
+        }));
         let early_speed = largest_signed(early().map(|s| speed_change_of(latch, s)));
         if is_stand_on_course_change(early_turn, rules) {
             self.violations

@@ -205,8 +205,27 @@ pub fn assess_encounter_acting(
             findings.judge_manner_of_giving_way(&measured, latch.encounter, rules, scoring);
         }
         Role::StandOn => {
-            let may_act = stand_on_may_act(samples, giving_way, rules);
-            findings.judge_stand_on(window.samples(samples), latch, rules, scoring, may_act);
+            let giving_way_at = giving_way_at(samples, giving_way);
+            let may_act = {
+                let giving_way_at = giving_way_at.clone();
+                let rules = *rules;
+                move |s: &EncounterSample| {
+                    rules::may_act(
+                        s.range_m(),
+                        giving_way_at.contains(&s.time_s.to_bits()),
+                        &rules,
+                    )
+                }
+            };
+            let giving = move |s: &EncounterSample| giving_way_at.contains(&s.time_s.to_bits());
+            findings.judge_stand_on(
+                window.samples(samples),
+                latch,
+                rules,
+                scoring,
+                may_act,
+                giving,
+            );
         }
         Role::None => {}
     }
@@ -214,23 +233,18 @@ pub fn assess_encounter_acting(
     assemble(latch, &measured, findings, passed_at_s, scoring)
 }
 
-/// Whether ownship, standing on, may act at a sample: within the action
-/// range, or giving way to another vessel then ([`rules::may_act`]).
-fn stand_on_may_act(
+/// The times (as bits) of the samples at which ownship gave way to another
+/// vessel: then, standing on, it may act ([`rules::may_act`]).
+fn giving_way_at(
     samples: &[EncounterSample],
     giving_way: &[bool],
-    rules: &RuleParameters,
-) -> impl Fn(&EncounterSample) -> bool {
-    let acting_at: std::collections::HashSet<u64> = samples
+) -> std::collections::HashSet<u64> {
+    samples
         .iter()
         .zip(giving_way)
         .filter(|(_, giving)| **giving)
         .map(|(sample, _)| sample.time_s.to_bits())
-        .collect();
-    let rules = *rules;
-    move |s: &EncounterSample| {
-        rules::may_act(s.range_m(), acting_at.contains(&s.time_s.to_bits()), &rules)
-    }
+        .collect()
 }
 
 /// The assessment from the measurements and findings: the safety score (0

@@ -25,8 +25,8 @@
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
-use vorrt_colregs::rules::alteration_made;
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
+use vorrt_colregs::rules::{alteration_made, giving_way_to_any};
 use vorrt_colregs::{EncounterLatch, VesselState, update_latch_steady};
 use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
@@ -340,6 +340,7 @@ pub fn simulate_with(
         let steady_course_rad =
             steady_course_rad(&record.times_s, &own_courses_rad, STEADY_COURSE_WINDOW_S)
                 .unwrap_or(own.course_rad);
+        let acting_for_others = giving_way_to_any(latches.iter().flatten());
         for ((latch, altered), target) in latches.iter_mut().zip(&mut alterations).zip(&targets) {
             let before = *latch;
             *latch = update_latch_steady(
@@ -350,9 +351,9 @@ pub fn simulate_with(
                 time_s,
                 &config.rules,
             );
-            // The alteration made for an encounter, as the planner counts it
-            // along a branch (rule 16).
-            *altered = alteration_made(before, *latch, *altered, own.course_rad);
+            // What ownship carries for an encounter, as the planner counts
+            // it along a branch (rules 16, 17).
+            *altered = alteration_made(before, *latch, *altered, own.course_rad, acting_for_others);
         }
         record.ownship.push(own);
         for (track, target) in record.targets.iter_mut().zip(&targets) {
