@@ -162,6 +162,23 @@ impl Leg {
         leg
     }
 
+    /// The first `elapsed_s` seconds of the leg (all of it if it is shorter):
+    /// the same curve and speed profile, cut where ownship is then.
+    ///
+    /// ```
+    /// use vorrt_jfs::Leg;
+    /// use glam::DVec2;
+    /// let leg = Leg::straight(DVec2::ZERO, 0.0, 5000.0, 3.0).from_speed(6.0, 0.05);
+    /// let first = leg.until(100.0);
+    /// assert!((first.duration_s() - 100.0).abs() < 1e-9);
+    /// assert!(first.end_m().distance(leg.pose_at(100.0).position_m) < 1e-9);
+    /// ```
+    #[must_use]
+    pub fn until(self, elapsed_s: f64) -> Self {
+        let length_m = self.distance_at(elapsed_s).min(self.length_m());
+        self.cut_to(length_m)
+    }
+
     /// The first `length_m` metres of the leg (at most all of it).
     fn cut_to(self, length_m: f64) -> Self {
         let arc_m = self.arc_m();
