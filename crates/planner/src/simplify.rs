@@ -21,7 +21,8 @@
 //! smallest first; none at all first of all), held for a while ([`HOLD_M`],
 //! shortest first), then one leg to the goal; when no alteration to
 //! starboard (or holding on) at service speed is valid, the same at reduced
-//! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); SB-MPC's speed factors),
+//! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); scenario-based MPC's speed
+//! factors),
 //! then the alterations to port. The branch is what is left when no such
 //! manoeuvre is valid, as among several vessels.
 //!
@@ -251,11 +252,13 @@ fn reduction_held(hold: &Leg, after: &EncounterState) -> bool {
 }
 
 /// The speeds the manoeuvre search holds, as fractions of the service
-/// speed, in order: full speed, then half (scenario-based MPC's speed
-/// factors 1 and 0.5, Johansen et al. 2016; half the speed is a readily
-/// apparent reduction, Woerner 2019). Stopping is the evasive fallback's
-/// ([`crate::evasion`]).
-pub const SPEED_FACTORS: [f64; 2] = [1.0, 0.5];
+/// speed, in order: full speed, then a reduction to 45 % (scenario-based
+/// MPC's speed factors are 1 and 0.5, Johansen et al. 2016; a speed halved
+/// is readily apparent, Woerner 2019; 0.45 rather than 0.5 so that an
+/// observer measuring speed over ground from a slightly different reference
+/// still sees it halved, as 35° is planned for a 30° alteration). Stopping
+/// is the evasive fallback's ([`crate::evasion`]).
+pub const SPEED_FACTORS: [f64; 2] = [1.0, 0.45];
 
 /// The alterations of course the manoeuvre search tries, degrees (positive
 /// to starboard), in order: holding on, then readily apparent alterations to

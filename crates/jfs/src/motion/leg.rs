@@ -72,6 +72,18 @@ pub struct Piece {
     /// Whether the piece is a chord of the turn (true) or part of the settled
     /// straight run (false).
     pub turning: bool,
+    /// Whether ownship's speed changes along the piece (it is part of the
+    /// leg's change of speed, not yet at the settled speed).
+    pub changing_speed: bool,
+}
+
+impl Piece {
+    /// Whether the piece is part of the manoeuvre's transition (a chord of
+    /// the turn, or the change of speed) rather than the settled motion.
+    #[must_use]
+    pub fn transient(&self) -> bool {
+        self.turning || self.changing_speed
+    }
 }
 
 impl Piece {
@@ -541,6 +553,7 @@ impl Leg {
             runs: (0, runs),
             changes: (0, changes),
             change_s,
+            change_m: self.speed_change_m(),
             from_m: 0.0,
         }
     }
@@ -558,6 +571,8 @@ struct Pieces<'a> {
     runs: (usize, usize),
     changes: (usize, usize),
     change_s: f64,
+    /// Metres sailed while the speed changes.
+    change_m: f64,
     /// Where the next piece starts, metres along the leg.
     from_m: f64,
 }
@@ -630,6 +645,7 @@ impl Iterator for Pieces<'_> {
                 0.0
             },
             turning,
+            changing_speed: from_m < self.change_m - SAME_POINT_M,
         })
     }
 }
