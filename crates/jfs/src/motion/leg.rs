@@ -319,18 +319,29 @@ impl Leg {
     /// Seconds the turn takes.
     #[must_use]
     pub fn turn_duration_s(&self) -> f64 {
+        if self.speed_change.is_none() {
+            return self.arc_m() / self.speed_mps;
+        }
         self.time_at_distance(self.arc_m())
     }
 
     /// Seconds the straight run takes.
     #[must_use]
     pub fn straight_duration_s(&self) -> f64 {
+        if self.speed_change.is_none() {
+            return self.straight_m / self.speed_mps;
+        }
         self.duration_s() - self.turn_duration_s()
     }
 
     /// Seconds the leg takes.
     #[must_use]
     pub fn duration_s(&self) -> f64 {
+        if self.speed_change.is_none() {
+            // At one speed, in the form the planner has always timed legs
+            // (its recorded plans are reproduced bit for bit).
+            return self.turn_duration_s() + self.straight_duration_s();
+        }
         self.time_at_distance(self.length_m())
     }
 
@@ -366,6 +377,9 @@ impl Leg {
     /// Where the leg ends, metres.
     #[must_use]
     pub fn end_m(&self) -> DVec2 {
+        if self.speed_change.is_none() {
+            return self.turn_end_m() + self.velocity_mps() * self.straight_duration_s();
+        }
         self.turn_end_m() + angle::velocity(self.course_rad, self.straight_m)
     }
 
@@ -440,6 +454,24 @@ impl Leg {
     /// ```
     #[must_use]
     pub fn pose_at(&self, elapsed_s: f64) -> Pose {
+        if self.speed_change.is_none() {
+            let turn_s = self.turn_duration_s();
+            let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
+            return if elapsed_s < turn_s {
+                let swept = elapsed_s * self.speed_mps / self.turn_radius_m;
+                Pose {
+                    position_m: self.on_arc(swept),
+                    course_rad: angle::normalize_2pi(
+                        self.start_course_rad + self.turn_rad.signum() * swept,
+                    ),
+                }
+            } else {
+                Pose {
+                    position_m: self.turn_end_m() + self.velocity_mps() * (elapsed_s - turn_s),
+                    course_rad: self.course_rad,
+                }
+            };
+        }
         self.pose_along(self.distance_at(elapsed_s))
     }
 
@@ -464,6 +496,9 @@ impl Leg {
     /// ```
     #[must_use]
     pub fn remainder(&self, elapsed_s: f64) -> Leg {
+        if self.speed_change.is_none() {
+            return self.remainder_at_one_speed(elapsed_s);
+        }
         let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
         let sailed_m = self.distance_at(elapsed_s).min(self.length_m());
         let pose = self.pose_along(sailed_m);
@@ -490,6 +525,31 @@ impl Leg {
                 turn_rad: 0.0,
                 straight_m: (self.straight_m - (sailed_m - arc_m)).max(0.0),
                 speed_change,
+                ..*self
+            }
+        }
+    }
+
+    /// [`remainder`](Self::remainder) of a leg sailed at one speed, in the
+    /// form the planner has always cut legs.
+    fn remainder_at_one_speed(&self, elapsed_s: f64) -> Leg {
+        let pose = self.pose_at(elapsed_s);
+        let turn_s = self.turn_duration_s();
+        let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
+        if elapsed_s < turn_s {
+            let swept = elapsed_s * self.speed_mps / self.turn_radius_m;
+            Leg {
+                start_m: pose.position_m,
+                start_course_rad: pose.course_rad,
+                turn_rad: self.turn_rad - self.turn_rad.signum() * swept,
+                ..*self
+            }
+        } else {
+            Leg {
+                start_m: pose.position_m,
+                start_course_rad: self.course_rad,
+                turn_rad: 0.0,
+                straight_m: (self.straight_m - (elapsed_s - turn_s) * self.speed_mps).max(0.0),
                 ..*self
             }
         }
@@ -547,6 +607,7 @@ impl Leg {
         };
         Pieces {
             leg: self,
+            index: 0,
             arc_m: self.arc_m(),
             length_m: self.length_m(),
             chords: (0, chords),
@@ -564,6 +625,8 @@ impl Leg {
 /// walked in order.
 struct Pieces<'a> {
     leg: &'a Leg,
+    /// How many pieces have been given.
+    index: usize,
     arc_m: f64,
     length_m: f64,
     /// (next index, count) of each grid.
@@ -607,10 +670,65 @@ impl Pieces<'_> {
     }
 }
 
+impl Pieces<'_> {
+    /// The `index`-th piece of a leg sailed at one speed: chords of equal
+    /// angle, then runs of equal length, in the form the planner has always
+    /// cut legs (its recorded plans are reproduced bit for bit).
+    fn at_one_speed(&self, index: usize) -> Option<Piece> {
+        let leg = self.leg;
+        let (chords, runs) = (self.chords.1, self.runs.1);
+        if index >= chords + runs {
+            return None;
+        }
+        let turn = leg.turn_rad.abs();
+        let turn_s = leg.turn_duration_s();
+        if index < chords {
+            let chord_s = turn_s / chords as f64;
+            let from = leg.on_arc(turn * index as f64 / chords as f64);
+            let to = leg.on_arc(turn * (index + 1) as f64 / chords as f64);
+            let course_rad = angle::normalize_2pi(
+                leg.start_course_rad
+                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chords as f64,
+            );
+            return Some(Piece {
+                start_m: from,
+                course_rad,
+                velocity_mps: (to - from) / chord_s,
+                elapsed_s: chord_s * index as f64,
+                duration_s: chord_s,
+                turning: true,
+                changing_speed: false,
+            });
+        }
+        let run = index - chords;
+        let run_s = leg.straight_duration_s() / runs as f64;
+        let velocity = leg.velocity_mps();
+        let (start_m, duration_s) = if runs == 1 {
+            (leg.turn_end_m(), leg.straight_duration_s())
+        } else {
+            (leg.turn_end_m() + velocity * (run_s * run as f64), run_s)
+        };
+        Some(Piece {
+            start_m,
+            course_rad: leg.course_rad,
+            velocity_mps: velocity,
+            elapsed_s: turn_s + run_s * run as f64,
+            duration_s,
+            turning: false,
+            changing_speed: false,
+        })
+    }
+}
+
 impl Iterator for Pieces<'_> {
     type Item = Piece;
 
     fn next(&mut self) -> Option<Piece> {
+        if self.leg.speed_change.is_none() {
+            let piece = self.at_one_speed(self.index);
+            self.index += 1;
+            return piece;
+        }
         if self.from_m >= self.length_m - SAME_POINT_M {
             return None;
         }
