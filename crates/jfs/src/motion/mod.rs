@@ -26,6 +26,7 @@ use serde::{Deserialize, Serialize};
 use vorrt_geometry::angle;
 
 mod leg;
+mod pieces;
 
 pub use leg::{Leg, Piece, SpeedChange};
 
