@@ -9,7 +9,7 @@
 //! | module | what it gives |
 //! |---|---|
 //! | [`prediction`] | [`TargetState`]: constant course and speed, or steer for a goal and stop there; closed-form [`TargetState::predict`] and [`LinearTrack`] |
-//! | [`motion`] | [`MotionModel`]: ownship's motion from a pose toward a point as a [`Leg`] (turn, then straight); [`InstantTurn`] (the paper's step) and [`RateLimitedTurn`] (arcs at a bounded rate of turn) |
+//! | [`motion`] | [`MotionModel`]: ownship's motion from a pose toward a point as a [`Leg`] (turn, then straight, with a speed profile: [`Leg::from_speed`]); [`InstantTurn`] (the paper's step) and [`RateLimitedTurn`] (arcs at a bounded rate of turn) |
 //! | [`joint_state`] | [`JointState`] (every vessel at one time), [`step_ownship`] and [`JointState::step_toward`]: the paper's JFS step |
 //! | [`error`] | [`JfsError`] |
 #![forbid(missing_docs)]
@@ -22,7 +22,7 @@ pub mod prediction;
 pub use error::JfsError;
 pub use joint_state::{JointState, OwnshipStep, step_ownship};
 pub use motion::{
-    InstantTurn, Leg, MotionModel, OwnshipModel, Piece, Pose, RateLimitedTurn,
-    default_turn_rate_rad_s,
+    InstantTurn, Leg, MotionModel, OwnshipModel, Piece, Pose, RateLimitedTurn, SpeedChange,
+    default_speed_change_mps2, default_turn_rate_rad_s,
 };
 pub use prediction::{LinearTrack, TargetState};

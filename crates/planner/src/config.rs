@@ -141,6 +141,12 @@ pub struct PlannerConfig {
     /// rate of turn (the default), in which case the plan is the tree's
     /// branch simplified into legs joined by arcs.
     pub turning: Turning,
+    /// How fast ownship changes speed (slowing down or speeding up back to
+    /// its service speed), m/s²; `None` (the default): from its length and
+    /// service speed, stopping in 15 lengths
+    /// (`vorrt_jfs::default_speed_change_mps2`). With `Turning::Instant`
+    /// speed changes are instantaneous, as turns are.
+    pub speed_change_mps2: Option<f64>,
     /// Which COLREGs duties the validity check enforces (default: all).
     pub compliance: Compliance,
     /// The COLREGs constants: MTD, sectors, stand-on tolerances.
@@ -165,6 +171,7 @@ impl Default for PlannerConfig {
             time_budget_s: None,
             nearest_index: NearestIndex::Linear,
             turning: Turning::FromLength,
+            speed_change_mps2: None,
             compliance: Compliance::Full,
             rules: RuleParameters::default(),
         }
@@ -324,7 +331,37 @@ impl PlannerConfig {
                 "a finite rate of turn greater than 0",
             );
         }
+        if let Some(rate) = self.speed_change_mps2
+            && !(rate.is_finite() && rate > 0.0)
+        {
+            return invalid(
+                "speed_change_mps2",
+                rate,
+                "a finite rate of speed change greater than 0 m/s²",
+            );
+        }
         self.rules.validate().map_err(PlannerError::from)
+    }
+
+    /// How fast ownship (`length_m`, service speed `service_speed_mps`)
+    /// changes speed, m/s²: infinite for instantaneous turns (the paper's
+    /// model has no dynamics), else `speed_change_mps2` or the default from
+    /// its length and speed.
+    ///
+    /// ```
+    /// use vorrt_planner::{PlannerConfig, Turning};
+    /// let config = PlannerConfig::default();
+    /// assert!((config.speed_change_rate_mps2(50.0, 6.0) - 0.024).abs() < 1e-12);
+    /// let instant = PlannerConfig { turning: Turning::Instant, ..config };
+    /// assert!(instant.speed_change_rate_mps2(50.0, 6.0).is_infinite());
+    /// ```
+    #[must_use]
+    pub fn speed_change_rate_mps2(&self, length_m: f64, service_speed_mps: f64) -> f64 {
+        match (self.turning, self.speed_change_mps2) {
+            (Turning::Instant, _) => f64::INFINITY,
+            (_, Some(rate)) => rate,
+            (_, None) => vorrt_jfs::default_speed_change_mps2(length_m, service_speed_mps),
+        }
     }
 }
 
@@ -339,7 +376,14 @@ mod tests {
 
     #[test]
     fn each_bad_field_is_named() {
-        let cases: [(PlannerConfig, &str); 5] = [
+        let cases: [(PlannerConfig, &str); 6] = [
+            (
+                PlannerConfig {
+                    speed_change_mps2: Some(0.0),
+                    ..PlannerConfig::default()
+                },
+                "speed_change_mps2",
+            ),
             (
                 PlannerConfig {
                     step_m: 0.0,

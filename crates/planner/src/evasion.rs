@@ -8,9 +8,17 @@
 //! the goal and the COLREGs preferences except one: among equally good
 //! courses, the smallest turn wins, and a starboard turn before a port one
 //! (rules 8 and 17(b): any action that best aids to avoid collision).
+//!
+//! When no course keeps the clearance at service speed, the same courses
+//! are tried at half speed, then stopping ([`EVASION_SPEED_FACTORS`]; rule
+//! 8(e): slacken speed or stop; MOOS-IvP's all-stop when turning can no
+//! longer avoid a collision). Ownship changes speed at the configured rate
+//! (`PlannerConfig::speed_change_rate_mps2`) and, once stopped, lies still
+//! to the horizon's end.
 
 use crate::problem::PlanningProblem;
 use crate::safety::min_distance_over;
+use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::contact_range_m;
 use vorrt_geometry::angle;
@@ -21,11 +29,18 @@ use vorrt_jfs::{InstantTurn, Leg, MotionModel, Pose};
 pub struct EvasiveManeuver {
     /// The course, radians.
     pub course_rad: f64,
+    /// The speed settled at, m/s: the service speed, half of it, or 0 (stop).
+    #[serde(default)]
+    pub speed_mps: f64,
     /// The smallest distance between the hulls of ownship and any target over
     /// the horizon on that course, metres (reference points less half the sum
     /// of the lengths, as `d_th` is measured).
     pub min_distance_m: f64,
 }
+
+/// The speeds the evasive manoeuvre tries, as fractions of the service
+/// speed, in order: full speed, half speed, stop.
+pub const EVASION_SPEED_FACTORS: [f64; 3] = [1.0, 0.5, 0.0];
 
 /// Among `courses` evenly spaced courses (e.g. 72 for 5°), tried in order of
 /// the turn from the present course (0, +5°, -5°, +10°, ...), the first that
@@ -57,12 +72,43 @@ pub fn evasive_course(
     let instant = InstantTurn {
         max_turn_rad: std::f64::consts::PI,
     };
-    evasive_leg(problem, horizon_s, courses, clearance_m, &instant).1
+    evasive_leg(
+        problem,
+        horizon_s,
+        courses,
+        clearance_m,
+        &instant,
+        f64::INFINITY,
+    )
+    .1
 }
 
-/// As [`evasive_course`], for a vessel that turns as `model` says: each
-/// course is judged along the curve sailed to take it (the turn, then the
-/// straight run) for `horizon_s`, and the leg to sail is returned with it.
+/// As [`evasive_course`], for a vessel that turns as `model` says and
+/// changes speed at `speed_change_mps2`: each course and speed is judged
+/// along the curve sailed to take it (the turn, then the straight run, with
+/// the speed changing from the present one) for `horizon_s`, and the leg to
+/// sail is returned with it.
+///
+/// ```
+/// use vorrt_planner::{evasive_leg, PlanningProblem};
+/// use vorrt_colregs::VesselState;
+/// use vorrt_jfs::{RateLimitedTurn, TargetState};
+/// use glam::DVec2;
+/// // Boxed in: 16 vessels lying still on a ring of 600 m. No course keeps
+/// // 200 m over 10 minutes at 6 m/s or at 3 m/s; stopping does.
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let targets = (0..16).map(|k| {
+///     let bearing = f64::from(k) * std::f64::consts::TAU / 16.0;
+///     let at = 600.0 * DVec2::new(bearing.sin(), bearing.cos());
+///     TargetState::constant_velocity(VesselState::new(at, 0.0, 0.0, 50.0))
+/// }).collect();
+/// let problem = PlanningProblem::new(own, DVec2::new(0.0, 5000.0), targets);
+/// let model = RateLimitedTurn { turn_radius_m: 150.0 };
+/// let (leg, evasion) = evasive_leg(&problem, 600.0, 72, 200.0, &model, 0.1);
+/// assert_eq!(evasion.speed_mps, 0.0);
+/// assert!(evasion.min_distance_m >= 200.0);
+/// assert!((leg.length_m() - 180.0).abs() < 1e-6); // 6² / (2 · 0.1)
+/// ```
 #[must_use]
 pub fn evasive_leg<M: MotionModel>(
     problem: &PlanningProblem,
@@ -70,8 +116,10 @@ pub fn evasive_leg<M: MotionModel>(
     courses: usize,
     clearance_m: f64,
     model: &M,
+    speed_change_mps2: f64,
 ) -> (Leg, EvasiveManeuver) {
     let own = problem.ownship;
+    let service_mps = problem.service_speed_mps();
     let from = Pose {
         position_m: own.position_m,
         course_rad: own.course_rad,
@@ -81,14 +129,19 @@ pub fn evasive_leg<M: MotionModel>(
         .iter()
         .map(|target| target.track())
         .collect();
-    let leg_for = |course_rad: f64| {
-        let mut leg = model.turn_onto(from, course_rad, own.speed_mps, 0.0);
-        leg.straight_m = ((horizon_s - leg.turn_duration_s()).max(0.0)) * own.speed_mps;
-        leg
+    let leg_for = |course_rad: f64, speed_mps: f64| {
+        // Long enough for the horizon at the faster speed, then cut to it
+        // (a leg that stops ends where ownship stops).
+        let reach_m = horizon_s * own.speed_mps.max(speed_mps);
+        model
+            .turn_onto(from, course_rad, speed_mps, reach_m)
+            .from_speed(own.speed_mps, speed_change_mps2)
+            .until(horizon_s)
     };
     let keep = |leg: &Leg| {
-        let margin_m = leg.chord_error_m();
-        leg.pieces(0.0)
+        let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
+        let sailed = leg
+            .pieces(0.0)
             .map(|piece| {
                 tracks
                     .iter()
@@ -100,44 +153,70 @@ pub fn evasive_leg<M: MotionModel>(
                             piece.elapsed_s,
                             piece.duration_s,
                         ) - contact_range_m(own.length_m, track.vessel.length_m)
-                            - if piece.turning { margin_m } else { 0.0 }
+                            - if piece.turning {
+                                piece_error_m
+                            } else {
+                                timing_error_m
+                            }
                     })
                     .fold(f64::INFINITY, f64::min)
             })
-            .fold(f64::INFINITY, f64::min)
+            .fold(f64::INFINITY, f64::min);
+        // Stopped short of the horizon: lying still for the rest of it.
+        let still_s = horizon_s - leg.duration_s();
+        let lying = if still_s > 0.0 {
+            tracks
+                .iter()
+                .map(|track| {
+                    min_distance_over(leg.end_m(), DVec2::ZERO, track, leg.duration_s(), still_s)
+                        - contact_range_m(own.length_m, track.vessel.length_m)
+                })
+                .fold(f64::INFINITY, f64::min)
+        } else {
+            f64::INFINITY
+        };
+        sailed.min(lying)
     };
-    let hold = leg_for(own.course_rad);
-    let mut best = (
-        hold,
-        EvasiveManeuver {
-            course_rad: own.course_rad,
-            min_distance_m: keep(&hold),
-        },
-    );
-    if best.1.min_distance_m >= clearance_m {
-        return best;
-    }
     let courses = courses.max(1);
     let spacing = std::f64::consts::TAU / courses as f64;
-    // Turns in order of size, starboard first: +s, -s, +2s, -2s, ...
-    for step in 1..=courses / 2 {
-        for sign in [1.0, -1.0] {
-            let course_rad = angle::normalize_2pi(own.course_rad + sign * spacing * step as f64);
-            let leg = leg_for(course_rad);
+    // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
+    // -2s, ...; at each speed in turn.
+    let turns = std::iter::once(0.0).chain(
+        (1..=courses / 2)
+            .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
+    );
+    let mut best: Option<(Leg, EvasiveManeuver)> = None;
+    for factor in EVASION_SPEED_FACTORS {
+        let speed_mps = factor * service_mps;
+        for turn_rad in turns.clone() {
+            let course_rad = angle::normalize_2pi(own.course_rad + turn_rad);
+            let leg = leg_for(course_rad, speed_mps);
             let min_distance_m = keep(&leg);
             let maneuver = EvasiveManeuver {
                 course_rad,
+                speed_mps,
                 min_distance_m,
             };
             if min_distance_m >= clearance_m {
                 return (leg, maneuver);
             }
-            if min_distance_m > best.1.min_distance_m {
-                best = (leg, maneuver);
+            if best
+                .as_ref()
+                .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
+            {
+                best = Some((leg, maneuver));
             }
         }
     }
-    best
+    best.unwrap_or_else(|| {
+        let leg = leg_for(own.course_rad, service_mps);
+        let maneuver = EvasiveManeuver {
+            course_rad: own.course_rad,
+            speed_mps: service_mps,
+            min_distance_m: keep(&leg),
+        };
+        (leg, maneuver)
+    })
 }
 
 #[cfg(test)]

@@ -280,6 +280,23 @@ impl Plan {
         Some(pose)
     }
 
+    /// Ownship's planned speed at `time_s`, m/s, along the legs' speed
+    /// profiles (before the plan, its start speed; after it, its last leg's
+    /// settled speed). `None` for a plan without legs.
+    #[must_use]
+    pub fn speed_at(&self, time_s: f64) -> Option<f64> {
+        let first_leg = self.legs.first()?;
+        let first = self.waypoints.first()?;
+        if time_s <= first.time_s {
+            return Some(first_leg.start_speed_mps());
+        }
+        let index = self.waypoints[1..]
+            .partition_point(|waypoint| waypoint.time_s < time_s)
+            .min(self.legs.len() - 1);
+        let leg_start_s = self.waypoints.get(index)?.time_s;
+        Some(self.legs[index].speed_at(time_s - leg_start_s))
+    }
+
     /// Ownship's planned position and course at `time_s` (clamped to the
     /// plan's span): [`pose_at`](Self::pose_at) as a pair.
     #[must_use]

@@ -30,8 +30,15 @@ pub const MAX_START_TIME_S: f64 = 1e12;
 pub struct PlanningProblem {
     /// The clock at the start, seconds.
     pub start_time_s: f64,
-    /// Ownship now. Its speed is held along the plan.
+    /// Ownship now, at its present speed (which may be below its service
+    /// speed, after slowing down or stopping).
     pub ownship: VesselState,
+    /// The speed ownship sails at when it is not slowing down for a
+    /// manoeuvre, m/s; `None` (the default): its present speed. A plan
+    /// starts at the present speed and changes speed toward this one at the
+    /// configured rate (`PlannerConfig::speed_change_rate_mps2`).
+    #[serde(default)]
+    pub service_speed_mps: Option<f64>,
     /// Where ownship is bound, metres.
     pub goal_m: DVec2,
     /// The other vessels now, with their predicted motion.
@@ -53,10 +60,28 @@ impl PlanningProblem {
         Self {
             start_time_s: 0.0,
             ownship,
+            service_speed_mps: None,
             goal_m,
             targets,
             encounters: Vec::new(),
             alterations: Vec::new(),
+        }
+    }
+
+    /// The speed ownship sails at when not slowing down, m/s: the service
+    /// speed when given, else the present speed.
+    #[must_use]
+    pub fn service_speed_mps(&self) -> f64 {
+        self.service_speed_mps.unwrap_or(self.ownship.speed_mps)
+    }
+
+    /// Ownship now, at its service speed: the state the planner's checks
+    /// start from (every move carries its own velocity).
+    #[must_use]
+    pub fn ownship_at_service_speed(&self) -> VesselState {
+        VesselState {
+            speed_mps: self.service_speed_mps(),
+            ..self.ownship
         }
     }
 
@@ -79,11 +104,23 @@ impl PlanningProblem {
             return bad("start_time_s".into(), "is more than 1e12 s from 0");
         }
         check_vessel("ownship", &self.ownship)?;
-        if self.ownship.speed_mps < MIN_OWNSHIP_SPEED_MPS {
-            return bad(
-                "ownship.speed_mps".into(),
-                "must be at least 0.001 m/s for ownship to move",
-            );
+        match self.service_speed_mps {
+            None if self.ownship.speed_mps < MIN_OWNSHIP_SPEED_MPS => {
+                return bad(
+                    "ownship.speed_mps".into(),
+                    "must be at least 0.001 m/s for ownship to move",
+                );
+            }
+            Some(speed) if !speed.is_finite() => {
+                return bad("service_speed_mps".into(), "is not a finite number");
+            }
+            Some(speed) if !(MIN_OWNSHIP_SPEED_MPS..=MAX_SPEED_MPS).contains(&speed) => {
+                return bad(
+                    "service_speed_mps".into(),
+                    "must be from 0.001 m/s (for ownship to move) to 1000 m/s",
+                );
+            }
+            _ => {}
         }
         if !self.goal_m.is_finite() {
             return bad("goal_m".into(), "is not finite");

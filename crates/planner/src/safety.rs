@@ -89,7 +89,8 @@ pub struct SafetyChecker<'a> {
     pub config: &'a PlannerConfig,
     /// Each target's predicted motion from the plan's start.
     pub tracks: &'a [LinearTrack],
-    /// Ownship at the plan's start (its length and speed hold along the plan).
+    /// Ownship at the plan's start, at its service speed (its length holds
+    /// along the plan; each move carries its own velocity).
     pub ownship: VesselState,
     /// Where ownship is bound.
     pub goal_m: DVec2,
@@ -198,7 +199,9 @@ impl<'a> SafetyChecker<'a> {
         CandidateMotion {
             position_m: candidate.start_m,
             course_rad: candidate.course_rad,
-            speed_mps: self.ownship.speed_mps,
+            // The move's own speed (it may be slowing down): rule 17(a)(i)
+            // judges it against the latch's reference speed.
+            speed_mps: candidate.velocity_mps.length(),
             velocity_mps: candidate.velocity_mps,
         }
     }

@@ -19,11 +19,21 @@
 //! Before the branch's points, at every step, the simplifier tries the
 //! manoeuvre mariners use: one alteration of course ([`ALTERATIONS_DEG`],
 //! smallest first; none at all first of all), held for a while ([`HOLD_M`],
-//! shortest first), then one leg to the goal. The branch is what is left
-//! when no such manoeuvre is valid, as among several vessels.
+//! shortest first), then one leg to the goal; when no alteration to
+//! starboard (or holding on) at service speed is valid, the same at reduced
+//! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); scenario-based MPC's speed
+//! factors),
+//! then the alterations to port. The branch is what is left when no such
+//! manoeuvre is valid, as among several vessels.
+//!
+//! Every leg starts at the speed the one before ends at (the first at
+//! ownship's present speed) and changes speed toward its settled speed at
+//! the rate of [`Speeds`]: the leg to the goal, and the legs along the
+//! branch, settle at the service speed.
 
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
+use vorrt_colregs::Role;
 use vorrt_jfs::{Leg, MotionModel, Pose};
 
 /// When the next branch point cannot be reached by a valid leg, how many
@@ -42,13 +52,36 @@ pub struct SimplifiedLeg {
     pub state: EncounterState,
 }
 
+/// Ownship's speeds for a simplification.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Speeds {
+    /// The speed ownship is at when the first leg starts, m/s.
+    pub start_mps: f64,
+    /// The speed it sails at when not slowing down, m/s (positive).
+    pub service_mps: f64,
+    /// How fast it changes speed, m/s² (infinite: at once).
+    pub change_mps2: f64,
+}
+
+impl Speeds {
+    /// Sailing at `speed_mps` throughout.
+    #[must_use]
+    pub fn constant(speed_mps: f64) -> Self {
+        Self {
+            start_mps: speed_mps,
+            service_mps: speed_mps,
+            change_mps2: f64::INFINITY,
+        }
+    }
+}
+
 /// Simplifies the path through `points` (the branch after its root; the last
 /// is the goal) from `start` with `state` in force into legs of `model` at
-/// `speed_mps`, every one accepted by `validator`. `None` when some point
+/// `speeds`, every one accepted by `validator`. `None` when some point
 /// cannot be passed on by any valid leg.
 ///
 /// ```
-/// use vorrt_planner::simplify::simplify;
+/// use vorrt_planner::simplify::{simplify, Speeds};
 /// use vorrt_planner::validity::EncounterState;
 /// use vorrt_planner::{safety::SafetyChecker, PlannerConfig};
 /// use vorrt_colregs::VesselState;
@@ -65,7 +98,7 @@ pub struct SimplifiedLeg {
 ///     &RateLimitedTurn { turn_radius_m: 300.0 },
 ///     &checker,
 ///     Pose { position_m: DVec2::ZERO, course_rad: 0.0 },
-///     6.0,
+///     Speeds::constant(6.0),
 ///     &points,
 ///     &EncounterState::default(),
 /// )
@@ -76,19 +109,22 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
     start: Pose,
-    speed_mps: f64,
+    speeds: Speeds,
     points: &[DVec2],
     state: &EncounterState,
 ) -> Option<Vec<SimplifiedLeg>> {
     let mut legs = Vec::new();
     let mut pose = start;
+    let mut speed_mps = speeds.start_mps;
     let mut elapsed_s = 0.0;
     let mut state = state.clone();
     let mut next = 0usize;
     let last = points.len().checked_sub(1)?;
     while next <= last {
         let attempt = |index: usize| -> Option<SimplifiedLeg> {
-            let leg = model.steer(pose, points[index], speed_mps, f64::INFINITY)?;
+            let leg = model
+                .steer(pose, points[index], speeds.service_mps, f64::INFINITY)?
+                .from_speed(speed_mps, speeds.change_mps2);
             let mut after = state.clone();
             validator.validate(&leg, elapsed_s, &mut after).ok()?;
             Some(SimplifiedLeg {
@@ -108,8 +144,7 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
             end_elapsed_s: elapsed_s,
             state: state.clone(),
         };
-        if let Some((hold, back)) =
-            alter_hold_return(model, validator, &from, speed_mps, points[last])
+        if let Some((hold, back)) = alter_hold_return(model, validator, &from, speeds, points[last])
         {
             legs.push(hold);
             legs.push(back);
@@ -117,6 +152,7 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
         }
         let (index, leg) = farthest_reachable(next, last, &attempt)?;
         pose = leg.leg.end_pose();
+        speed_mps = leg.leg.end_speed_mps();
         elapsed_s = leg.end_elapsed_s;
         state = leg.state.clone();
         legs.push(leg);
@@ -125,23 +161,44 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
     Some(legs)
 }
 
-/// From where `from` ends, the first manoeuvre of the form "turn onto the
-/// present course plus one of [`ALTERATIONS_DEG`], hold it for one of
-/// [`HOLD_M`], then one leg to the goal" that the validator accepts, trying
-/// the smallest alteration first (holding on, then starboard, then port) and
-/// for each the shortest hold: the two legs, or `None`.
+/// From where `from` ends (at its end speed), the first manoeuvre of the
+/// form "turn onto the present course plus one of [`ALTERATIONS_DEG`] at one
+/// of [`SPEED_FACTORS`] of the service speed, hold it for one of
+/// [`HOLD_M`], then one leg to the goal at service speed" that the
+/// validator accepts: holding on and the starboard alterations (smallest
+/// first) at service speed, then the same at reduced speed, then the port
+/// alterations likewise; for each the shortest hold. The two legs, or `None`.
+///
+/// A reduced speed is held until it is reached (a speed change is readily
+/// apparent only once made: rule 8(b), half the speed) and until every
+/// encounter in which ownship gives way has passed (rule 8(d)), so ownship
+/// does not speed up again before the other vessel is past.
 fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
     from: &SimplifiedLeg,
-    speed_mps: f64,
+    speeds: Speeds,
     goal_m: DVec2,
 ) -> Option<(SimplifiedLeg, SimplifiedLeg)> {
     let pose = from.leg.end_pose();
-    for alteration_deg in ALTERATIONS_DEG {
+    let start_mps = from.leg.end_speed_mps();
+    let starboard = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
+    let port = ALTERATIONS_DEG.iter().filter(|deg| **deg < 0.0);
+    let order = SPEED_FACTORS
+        .iter()
+        .flat_map(|factor| starboard.clone().map(move |deg| (*deg, *factor)))
+        .chain(
+            SPEED_FACTORS
+                .iter()
+                .flat_map(|factor| port.clone().map(move |deg| (*deg, *factor))),
+        );
+    for (alteration_deg, factor) in order {
         let course_rad = pose.course_rad + alteration_deg.to_radians();
+        let hold_speed_mps = factor * speeds.service_mps;
         for hold_m in HOLD_M {
-            let hold = model.turn_onto(pose, course_rad, speed_mps, hold_m);
+            let hold = model
+                .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
+                .from_speed(start_mps, speeds.change_mps2);
             let mut after_hold = from.state.clone();
             if validator
                 .validate(&hold, from.end_elapsed_s, &mut after_hold)
@@ -150,10 +207,16 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                 // Holding on is already invalid this far: longer holds are too.
                 break;
             }
+            if factor < 1.0 && !reduction_held(&hold, &after_hold) {
+                continue;
+            }
             let hold_end_s = from.end_elapsed_s + hold.duration_s();
-            let Some(back) = model.steer(hold.end_pose(), goal_m, speed_mps, f64::INFINITY) else {
+            let Some(back) =
+                model.steer(hold.end_pose(), goal_m, speeds.service_mps, f64::INFINITY)
+            else {
                 continue;
             };
+            let back = back.from_speed(hold.end_speed_mps(), speeds.change_mps2);
             let mut after_back = after_hold.clone();
             if validator
                 .validate(&back, hold_end_s, &mut after_back)
@@ -176,6 +239,26 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     }
     None
 }
+
+/// Whether a hold at reduced speed has reached it and ends with no
+/// encounter in force in which ownship gives way (the other vessel is past).
+fn reduction_held(hold: &Leg, after: &EncounterState) -> bool {
+    hold.duration_s() >= hold.speed_change_s()
+        && !after
+            .latches
+            .iter()
+            .flatten()
+            .any(|latch| latch.encounter.role() == Role::GiveWay)
+}
+
+/// The speeds the manoeuvre search holds, as fractions of the service
+/// speed, in order: full speed, then a reduction to 45 % (scenario-based
+/// MPC's speed factors are 1 and 0.5, Johansen et al. 2016; a speed halved
+/// is readily apparent, Woerner 2019; 0.45 rather than 0.5 so that an
+/// observer measuring speed over ground from a slightly different reference
+/// still sees it halved, as 35° is planned for a 30° alteration). Stopping
+/// is the evasive fallback's ([`crate::evasion`]).
+pub const SPEED_FACTORS: [f64; 2] = [1.0, 0.45];
 
 /// The alterations of course the manoeuvre search tries, degrees (positive
 /// to starboard), in order: holding on, then readily apparent alterations to

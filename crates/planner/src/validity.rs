@@ -11,13 +11,15 @@
 //! [`crate::safety`]). A leg is cut into pieces: the chords of its turn are
 //! checked for clearance along the curve actually sailed (`d_th` plus the
 //! chord's largest distance from the arc) and for the rules an observer sees
-//! broken on the way (a stand-on vessel's course, a turn to port); the pieces
-//! of its straight run, on the settled course, get every check (velocity
-//! obstacle, clearance, clearance ahead, COLREGs). A turn is judged as an
-//! alteration by the course it settles on, as an observer judges one (rule
-//! 8(b)): the headings swept through on the way are transient. The
-//! encounters move on after every piece, turning or not, as the closed loop
-//! moves them at every step.
+//! broken on the way (a stand-on vessel's course and speed, a turn to port);
+//! so are the pieces along which the speed changes (`d_th` plus the timing
+//! error of a piece sailed at its mean velocity). The pieces of its straight
+//! run, on the settled course at the settled speed, get every check (velocity
+//! obstacle, clearance, clearance ahead, COLREGs). A turn, or a change of
+//! speed, is judged as a manoeuvre by the course and speed it settles on, as
+//! an observer judges one (rule 8(b)): the headings and speeds passed through
+//! on the way are transient. The encounters move on after every piece,
+//! transient or not, as the closed loop moves them at every step.
 
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
@@ -140,7 +142,8 @@ impl MotionValidator for SafetyChecker<'_> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
-        let chord_error_m = leg.chord_error_m();
+        let piece_error_m = leg.piece_error_m();
+        let timing_error_m = leg.timing_error_m();
         for piece in leg.pieces(self.config.step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -149,18 +152,20 @@ impl MotionValidator for SafetyChecker<'_> {
                 velocity_mps: piece.velocity_mps,
                 duration_s: piece.duration_s,
             };
-            if piece.turning {
-                // A turn is judged as an alteration by the course it settles
-                // on (rule 8(b)); but a stand-on vessel's course, and a turn
-                // to port, are seen on the way (check_turning), and the
-                // encounters move on as the turn is sailed, as the closed loop
-                // moves them at every step.
-                self.check_turning(
-                    &candidate,
-                    &state.latches,
-                    &state.alterations,
-                    chord_error_m,
-                )?;
+            if piece.transient() {
+                // A turn, or a change of speed, is judged as a manoeuvre by
+                // the course and speed it settles on (rule 8(b)); but a
+                // stand-on vessel's course and speed, and a turn to port, are
+                // seen on the way (check_turning), and the encounters move on
+                // as the manoeuvre is sailed, as the closed loop moves them at
+                // every step. While the speed changes, ownship is up to the
+                // timing error off the piece sailed at its mean velocity.
+                let margin_m = if piece.turning {
+                    piece_error_m
+                } else {
+                    timing_error_m
+                };
+                self.check_turning(&candidate, &state.latches, &state.alterations, margin_m)?;
             } else {
                 self.check(&candidate, &state.latches, &state.alterations)?;
             }
@@ -189,6 +194,7 @@ impl MotionValidator for SafetyChecker<'_> {
             let own_then = VesselState {
                 position_m: piece.end_m(),
                 course_rad,
+                speed_mps: piece.velocity_mps.length(),
                 ..self.ownship
             };
             state.advance(
@@ -224,7 +230,7 @@ pub fn check_legs(
     let checker = SafetyChecker::new(
         config,
         &tracks,
-        problem.ownship,
+        problem.ownship_at_service_speed(),
         problem.goal_m,
         problem.start_time_s,
     );

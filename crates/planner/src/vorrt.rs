@@ -19,7 +19,7 @@ use crate::plan::{Plan, PlanStatistics, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
-use crate::simplify::{SimplifiedLeg, simplify};
+use crate::simplify::{SimplifiedLeg, Speeds, simplify};
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
@@ -225,7 +225,9 @@ impl Planner {
         started: Instant,
     ) -> Result<Growth, PlannerError> {
         let config = self.config;
-        let own = problem.ownship;
+        // The tree is grown at the service speed; the plan's legs start from
+        // the present speed (`extract`).
+        let own = problem.ownship_at_service_speed();
         let checker = SafetyChecker::new(
             &self.config,
             &self.tracks,
@@ -348,11 +350,18 @@ impl Planner {
         statistics: &mut PlanStatistics,
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
-        let own = problem.ownship;
+        let own = problem.ownship_at_service_speed();
         let rate = self
             .config
             .turning
             .max_turn_rate_rad_s(own.length_m, own.speed_mps);
+        let speeds = Speeds {
+            start_mps: problem.ownship.speed_mps,
+            service_mps: own.speed_mps,
+            change_mps2: self
+                .config
+                .speed_change_rate_mps2(own.length_m, own.speed_mps),
+        };
         if node == 0 && own.position_m != problem.goal_m {
             // Not a branch to the goal: only the manoeuvre search applies.
             rate?;
@@ -409,7 +418,7 @@ impl Planner {
                         position_m: own.position_m,
                         course_rad: own.course_rad,
                     },
-                    own.speed_mps,
+                    speeds,
                     &points,
                     &root,
                 )?

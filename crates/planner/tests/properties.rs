@@ -264,6 +264,13 @@ proptest! {
             .unwrap();
         let rate = max_turn_rate(&plan);
         prop_assert!(rate <= limit * (1.0 + 1e-6), "rate of turn {}°/s > {}°/s", rate.to_degrees(), limit.to_degrees());
+        // (1c') The speed never exceeds the service speed nor changes faster
+        // than the rate of speed change.
+        let service = problem.service_speed_mps();
+        let rate_mps2 = planner.config().speed_change_rate_mps2(problem.ownship.length_m, service);
+        if let Err(message) = speed_profile_kept(&plan, service, rate_mps2) {
+            return Err(TestCaseError::fail(message));
+        }
         // (1c) One alteration and one return (to starboard, back to port,
         // and at most a final turn onto the goal): no zig-zag.
         prop_assert!(turn_reversals(&plan) <= 2, "{:?}: {} reversals in {:?}", case.kind, turn_reversals(&plan),
@@ -295,6 +302,159 @@ proptest! {
         let again = Planner::new(config()).unwrap().plan(problem, seed).unwrap();
         prop_assert_eq!(&plan.waypoints, &again.waypoints);
     }
+}
+
+/// Ownship's planned speed every `SAMPLE_S` along the plan: `(time, speed)`.
+fn speeds(plan: &Plan) -> Vec<(f64, f64)> {
+    sailed(plan)
+        .iter()
+        .map(|(time, _, _)| (*time, plan.speed_at(*time).unwrap()))
+        .collect()
+}
+
+/// Whether the planned speed stays within the service speed and changes no
+/// faster than `rate_mps2` between samples.
+fn speed_profile_kept(plan: &Plan, service_mps: f64, rate_mps2: f64) -> Result<(), String> {
+    let speeds = speeds(plan);
+    if let Some((time, speed)) = speeds.iter().find(|(_, speed)| *speed > service_mps + 1e-9) {
+        return Err(format!(
+            "{speed} m/s at {time} s, above the service speed {service_mps}"
+        ));
+    }
+    for pair in speeds.windows(2) {
+        let ((from_s, from), (to_s, to)) = (pair[0], pair[1]);
+        if (to - from).abs() > rate_mps2 * (to_s - from_s) + 1e-9 {
+            return Err(format!(
+                "speed {from} -> {to} m/s in {} s at {from_s} s",
+                to_s - from_s
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A give-way crossing in which turning is blocked: ownship (100 m) north
+/// at its service speed `own_kn`, or slower (`start_factor` of it, as after
+/// slowing down, replanning from its real state); a vessel alongside
+/// `abeam_m` to starboard at the service speed (any starboard alteration
+/// closes it); a crossing vessel from starboard on a collision course at
+/// `range_nm`, `miss_m` off.
+fn blocked_crossing() -> impl Strategy<Value = PlanningProblem> {
+    (
+        10.0f64..14.0,    // service speed, knots
+        0.3f64..1.0,      // present speed as a fraction of it
+        330.0f64..450.0,  // the vessel alongside, metres to starboard
+        2.5f64..4.0,      // crossing vessel's range, nautical miles
+        -150.0f64..150.0, // miss distance, metres
+    )
+        .prop_map(|(own_kn, start_factor, abeam_m, range_nm, miss_m)| {
+            let service = own_kn * KNOT;
+            let crossing_velocity = DVec2::new(-service, 0.0);
+            let meet_s = range_nm * NM / (2f64.sqrt() * service);
+            let meeting = DVec2::new(miss_m, service * meet_s);
+            let crossing = TargetState::constant_velocity(VesselState::new(
+                meeting - crossing_velocity * meet_s,
+                1.5 * std::f64::consts::PI,
+                service,
+                150.0,
+            ));
+            let alongside = TargetState::constant_velocity(VesselState::new(
+                DVec2::new(abeam_m, 0.0),
+                0.0,
+                service,
+                100.0,
+            ));
+            let own = VesselState::new(DVec2::ZERO, 0.0, start_factor * service, 100.0);
+            PlanningProblem {
+                service_speed_mps: Some(service),
+                ..PlanningProblem::new(
+                    own,
+                    DVec2::new(0.0, meeting.y + 3.0 * NM),
+                    vec![crossing, alongside],
+                )
+            }
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases() / 2, ..ProptestConfig::default() })]
+
+    /// Where turning is blocked and ownship may be slow already: every plan
+    /// keeps the clearance between hulls from every target when sampled
+    /// every second along its legs as sailed, never exceeds the service
+    /// speed, never changes speed faster than the rate, and never turns
+    /// faster than the limit.
+    #[test]
+    fn speed_changes_keep_the_limits_and_the_clearance(problem in blocked_crossing(), seed in 0u64..1000) {
+        let mut planner = Planner::new(config()).unwrap();
+        let Ok(plan) = planner.plan(&problem, seed) else {
+            return Ok(());
+        };
+        let service = problem.service_speed_mps();
+        let config = planner.config();
+        let rate_mps2 = config.speed_change_rate_mps2(problem.ownship.length_m, service);
+        if let Err(message) = speed_profile_kept(&plan, service, rate_mps2) {
+            return Err(TestCaseError::fail(message));
+        }
+        prop_assert!((plan.speed_at(problem.start_time_s).unwrap() - problem.ownship.speed_mps).abs() < 1e-9);
+        for target in &problem.targets {
+            let required = config.clearance_m
+                + vorrt_colregs::rules::contact_range_m(problem.ownship.length_m, target.vessel.length_m);
+            let clearance = min_clearance(&plan, target, problem.start_time_s);
+            prop_assert!(clearance >= required - 0.01, "clearance {} < {}", clearance, required);
+        }
+        let limit = config.turning.max_turn_rate_rad_s(problem.ownship.length_m, service).unwrap();
+        prop_assert!(max_turn_rate(&plan) <= limit * (1.0 + 1e-6));
+    }
+}
+
+/// Where ownship must give way to a crossing vessel and a vessel alongside
+/// to starboard blocks every alteration to starboard (a turn to port is
+/// forbidden, rule 15), the plan is to slow down: it holds its course at a
+/// reduced speed until the crossing vessel is past, then resumes its
+/// service speed. Without speed manoeuvres no compliant plan exists here.
+#[test]
+fn only_slowing_down_gives_way_when_turning_is_blocked() {
+    let service = 12.0 * KNOT;
+    let crossing = TargetState::constant_velocity(VesselState::new(
+        DVec2::new(3.0 * NM, 3.0 * NM),
+        1.5 * std::f64::consts::PI,
+        service,
+        150.0,
+    ));
+    let alongside = TargetState::constant_velocity(VesselState::new(
+        DVec2::new(400.0, 0.0),
+        0.0,
+        service,
+        100.0,
+    ));
+    let own = VesselState::new(DVec2::ZERO, 0.0, service, 100.0);
+    let problem = PlanningProblem::new(own, DVec2::new(0.0, 8.0 * NM), vec![crossing, alongside]);
+    let plan = Planner::new(config()).unwrap().plan(&problem, 1).unwrap();
+    // No course alteration at all.
+    assert!(
+        plan.legs.iter().all(|leg| leg.turn_rad.abs() < 1e-9),
+        "{:?}",
+        plan.legs
+    );
+    // Slower, then back to the service speed.
+    let reduced = vorrt_planner::simplify::SPEED_FACTORS[1] * service;
+    assert!((plan.legs[0].speed_mps - reduced).abs() < 1e-9);
+    assert!(plan.legs[0].duration_s() > plan.legs[0].speed_change_s());
+    let last = plan.legs.last().unwrap();
+    assert!((last.speed_mps - service).abs() < 1e-9);
+    assert!(
+        (plan
+            .speed_at(plan.waypoints.last().unwrap().time_s)
+            .unwrap()
+            - service)
+            .abs()
+            < 1e-9
+    );
+    // The crossing vessel passes ahead, at least d_th between the hulls.
+    let required = 200.0 + vorrt_colregs::rules::contact_range_m(100.0, 150.0);
+    assert!(min_clearance(&plan, &problem.targets[0], 0.0) >= required - 0.01);
+    assert!(!crosses_ahead_anywhere(&plan, &problem.targets[0]));
 }
 
 /// The success rate over a fixed sample of generated encounters.

@@ -18,6 +18,10 @@ struct Sailor<'a> {
     speed_mps: f64,
     rate_deg_s: f64,
     steer: Box<dyn Fn(f64, DVec2, DVec2) -> f64 + 'a>,
+    /// The commanded speed from the time, m/s (`None`: the speed held).
+    throttle: Option<Box<dyn Fn(f64) -> f64 + 'a>>,
+    /// How fast the speed follows the command, m/s².
+    speed_change_mps2: f64,
 }
 
 impl<'a> Sailor<'a> {
@@ -34,11 +38,18 @@ impl<'a> Sailor<'a> {
             speed_mps,
             rate_deg_s: 1.0,
             steer: Box::new(steer),
+            throttle: None,
+            speed_change_mps2: 0.05,
         }
     }
 
     fn holding(x_m: f64, y_m: f64, course_deg: f64, speed_mps: f64) -> Self {
         Self::new(x_m, y_m, course_deg, speed_mps, move |_, _, _| course_deg)
+    }
+
+    fn throttle(mut self, throttle: impl Fn(f64) -> f64 + 'a) -> Self {
+        self.throttle = Some(Box::new(throttle));
+        self
     }
 
     fn rate(mut self, rate_deg_s: f64) -> Self {
@@ -53,6 +64,11 @@ impl<'a> Sailor<'a> {
         let turn = angle::signed_turn(self.course_rad, command);
         let limit = self.rate_deg_s.to_radians() * STEP_S;
         self.course_rad = angle::normalize_2pi(self.course_rad + turn.clamp(-limit, limit));
+        if let Some(throttle) = &self.throttle {
+            let change = throttle(time_s) - self.speed_mps;
+            let limit = self.speed_change_mps2 * STEP_S;
+            self.speed_mps += change.clamp(-limit, limit);
+        }
         self.position_m += angle::velocity(self.course_rad, self.speed_mps) * STEP_S;
     }
 }
@@ -231,6 +247,40 @@ fn crossing_astern_is_compliant_and_ahead_is_not() {
     let names = findings(&ahead);
     assert!(names.contains(&"crossed_ahead"), "{names:?}");
     assert!(names.contains(&"no_action"), "{names:?}");
+}
+
+#[test]
+fn crossing_give_way_by_halving_speed_early_is_readily_apparent() {
+    // On a collision course (both at (0, 6 km) at 1000 s), ownship holds its
+    // course and slows from 6 to 3 m/s from 30 s on (at 0.05 m/s²): the
+    // target passes about 1.9 km ahead. The speed halved is the action:
+    // begun early, readily apparent, held until past.
+    let halving = |time_s: f64| if time_s >= 30.0 { 3.0 } else { 6.0 };
+    let judgement = judged(&sail(
+        Sailor::holding(0.0, 0.0, 0.0, 6.0).throttle(halving),
+        Sailor::holding(6000.0, 6000.0, 270.0, 6.0),
+        2400.0,
+    ));
+    let target = &judgement.targets[0];
+    assert_eq!(
+        target.latch.expect("risk").encounter,
+        Encounter::CrossingGiveWay
+    );
+    assert!(judgement.compliant, "{:?}", findings(&judgement));
+    let assessment = target.assessment.as_ref().expect("assessed");
+    assert!(assessment.action_range_m.expect("acted") > 2.0 * 1852.0);
+    // Slowing by a third is seen as an action, but not a readily apparent one.
+    let third = |time_s: f64| if time_s >= 30.0 { 4.0 } else { 6.0 };
+    let judgement = judged(&sail(
+        Sailor::holding(0.0, 0.0, 0.0, 6.0).throttle(third),
+        Sailor::holding(6000.0, 6000.0, 270.0, 6.0),
+        2400.0,
+    ));
+    assert!(
+        findings(&judgement).contains(&"action_not_apparent"),
+        "{:?}",
+        findings(&judgement)
+    );
 }
 
 /// Crossing from port: the target 6 km west and north heading east, giving

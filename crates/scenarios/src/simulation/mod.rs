@@ -1,8 +1,10 @@
 //! Closed-loop simulation of a scenario with a fixed time step.
 //!
 //! Ownship plans with the VORRT planner and sails its plan's legs with the
-//! planner's own motion model (arcs at its rate of turn, then straight runs),
-//! so the recorded track is the curve the planner checked. Every target moves
+//! planner's own motion model (arcs at its rate of turn, then straight runs,
+//! and the legs' speed profiles: its recorded speed is the plan's), so the
+//! recorded track is the curve the planner checked. It plans again from its
+//! present speed, with the scenario's speed as its service speed. Every target moves
 //! by its [`Behaviour`](crate::Behaviour) (constant motion, COLREGs-obeying,
 //! noisy, or a sudden turn; noise from a stream per target derived from the
 //! run's seed, so a run is reproducible). Ownship predicts a target from what
@@ -101,6 +103,10 @@ pub struct PlanEvent {
     /// On failure, the evasive course ownship turned to, degrees (`None` when
     /// it kept its previous plan, still safe).
     pub evasive_course_deg: Option<f64>,
+    /// On failure, the speed the evasive manoeuvre settles at, m/s: the
+    /// service speed, half of it or 0 (stop); `None` as for the course.
+    #[serde(default)]
+    pub evasive_speed_mps: Option<f64>,
     /// The COLREGs duties the plan that came back keeps: `full`, or a graded
     /// fallback (`directions`: a departure from rules 8 and 16; `safety_only`:
     /// from the steering rules, rules 2(b) and 17(b)). An evasive manoeuvre
@@ -287,6 +293,10 @@ pub fn simulate_with(
     let max_duration_s = scenario.max_duration_s();
     let goal_m = scenario.ownship_goal_m();
     let mut own = scenario.ownship_state();
+    // Ownship's service speed: it may slow down (or stop) along a plan, and
+    // plans again from its present speed, speeding back up to this one.
+    let service_speed_mps = own.speed_mps;
+    let speed_change_mps2 = config.speed_change_rate_mps2(own.length_m, service_speed_mps);
     let max_turn_rate_rad_s = config
         .turning
         .max_turn_rate_rad_s(own.length_m, own.speed_mps);
@@ -385,6 +395,7 @@ pub fn simulate_with(
             let problem = PlanningProblem {
                 start_time_s: time_s,
                 ownship: own,
+                service_speed_mps: Some(service_speed_mps),
                 goal_m,
                 targets: predicted.clone(),
                 encounters: latches.clone(),
@@ -424,6 +435,7 @@ pub fn simulate_with(
                         why,
                         seed: call_seed(seed, record.plans.len()),
                         clearance_m: config.clearance_m,
+                        speed_change_mps2,
                     },
                     &mut active,
                     &mut record.plans,

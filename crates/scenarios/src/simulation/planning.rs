@@ -33,6 +33,8 @@ pub(super) struct PlanCall {
     pub(super) why: PlanTrigger,
     pub(super) seed: u64,
     pub(super) clearance_m: f64,
+    /// How fast ownship changes speed, m/s² (the evasive manoeuvre's).
+    pub(super) speed_change_mps2: f64,
 }
 
 /// Calls the planners on `problem`, from all the rules down the graded
@@ -73,6 +75,7 @@ pub(super) fn plan_now(
                     statistics,
                     waypoints: plan.waypoints.clone(),
                     evasive_course_deg: None,
+                    evasive_speed_mps: None,
                     compliance,
                 });
                 let anticipated = plan.anticipated_encounters();
@@ -115,7 +118,7 @@ pub(super) fn plan_now(
                 .is_ok()
             })
     });
-    let evasive_course_deg = if keep_plan {
+    let evasion = if keep_plan {
         None
     } else {
         let (leg, evasion) = evasive_leg(
@@ -124,6 +127,7 @@ pub(super) fn plan_now(
             EVASION_COURSES,
             call.clearance_m,
             model,
+            call.speed_change_mps2,
         );
         *active = Some(ActivePlan {
             plan: leg_plan(leg, time_s),
@@ -132,7 +136,7 @@ pub(super) fn plan_now(
             anticipated: vec![Vec::new(); problem.targets.len()],
             evasive: true,
         });
-        Some(evasion.course_rad.to_degrees())
+        Some(evasion)
     };
     plans.push(PlanEvent {
         time_s,
@@ -142,7 +146,8 @@ pub(super) fn plan_now(
         error: first_error.map(|error| error.to_string()),
         statistics: spent,
         waypoints: Vec::new(),
-        evasive_course_deg,
+        evasive_course_deg: evasion.map(|evasion| evasion.course_rad.to_degrees()),
+        evasive_speed_mps: evasion.map(|evasion| evasion.speed_mps),
         compliance: if keep_plan {
             Compliance::Full
         } else {
@@ -194,12 +199,14 @@ pub(super) fn remaining_legs(plan: &Plan, time_s: f64) -> Vec<Leg> {
     legs
 }
 
-/// Ownship's state at `time_s` along `plan` (at its end once the plan ends).
+/// Ownship's state at `time_s` along `plan` (at its end once the plan
+/// ends): its pose and its speed along the plan's speed profile.
 pub(super) fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState {
     match plan.pose_at(time_s) {
         Some(pose) => VesselState {
             position_m: pose.position_m,
             course_rad: pose.course_rad,
+            speed_mps: plan.speed_at(time_s).unwrap_or(own.speed_mps),
             ..*own
         },
         None => own.advanced(0.0),

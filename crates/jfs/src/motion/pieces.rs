@@ -1,0 +1,153 @@
+//! The straight pieces a leg is checked by ([`Leg::pieces`]).
+
+use super::leg::{Leg, Piece, SAME_POINT_M};
+use glam::DVec2;
+use vorrt_geometry::angle;
+
+/// The pieces of a leg: the union of three grids of distances along it (the
+/// arc's chords, the straight run's pieces, the speed change's time steps),
+/// walked in order.
+pub(super) struct Pieces<'a> {
+    pub(super) leg: &'a Leg,
+    /// How many pieces have been given.
+    pub(super) index: usize,
+    pub(super) arc_m: f64,
+    pub(super) length_m: f64,
+    /// (next index, count) of each grid.
+    pub(super) chords: (usize, usize),
+    pub(super) runs: (usize, usize),
+    pub(super) changes: (usize, usize),
+    pub(super) change_s: f64,
+    /// Metres sailed while the speed changes.
+    pub(super) change_m: f64,
+    /// Where the next piece starts, metres along the leg.
+    pub(super) from_m: f64,
+}
+
+impl Pieces<'_> {
+    /// The next point of each grid beyond `from_m`, skipping points on or
+    /// before it.
+    fn next_point(&mut self) -> Option<f64> {
+        let (leg, arc_m, straight_m) = (self.leg, self.arc_m, self.leg.straight_m);
+        let change_s = self.change_s;
+        let from_m = self.from_m;
+        let (chords, runs, changes) = (self.chords.1, self.runs.1, self.changes.1);
+        let mut best = f64::INFINITY;
+        let mut visit = |grid: &mut (usize, usize), point: &dyn Fn(usize) -> f64| {
+            while grid.0 < grid.1 {
+                let at = point(grid.0 + 1);
+                if at > from_m + SAME_POINT_M {
+                    best = best.min(at);
+                    return;
+                }
+                grid.0 += 1;
+            }
+        };
+        visit(&mut self.chords, &|k| arc_m * k as f64 / chords as f64);
+        visit(&mut self.runs, &|k| {
+            arc_m + straight_m * k as f64 / runs as f64
+        });
+        visit(&mut self.changes, &|k| {
+            leg.distance_at(change_s * k as f64 / changes as f64)
+        });
+        (best.is_finite()).then(|| best.min(self.length_m))
+    }
+}
+
+impl Pieces<'_> {
+    /// The `index`-th piece of a leg sailed at one speed: chords of equal
+    /// angle, then runs of equal length, in the form the planner has always
+    /// cut legs (its recorded plans are reproduced bit for bit).
+    fn at_one_speed(&self, index: usize) -> Option<Piece> {
+        let leg = self.leg;
+        let (chords, runs) = (self.chords.1, self.runs.1);
+        if index >= chords + runs {
+            return None;
+        }
+        let turn = leg.turn_rad.abs();
+        let turn_s = leg.turn_duration_s();
+        if index < chords {
+            let chord_s = turn_s / chords as f64;
+            let from = leg.on_arc(turn * index as f64 / chords as f64);
+            let to = leg.on_arc(turn * (index + 1) as f64 / chords as f64);
+            let course_rad = angle::normalize_2pi(
+                leg.start_course_rad
+                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chords as f64,
+            );
+            return Some(Piece {
+                start_m: from,
+                course_rad,
+                velocity_mps: (to - from) / chord_s,
+                elapsed_s: chord_s * index as f64,
+                duration_s: chord_s,
+                turning: true,
+                changing_speed: false,
+            });
+        }
+        let run = index - chords;
+        let run_s = leg.straight_duration_s() / runs as f64;
+        let velocity = leg.velocity_mps();
+        let (start_m, duration_s) = if runs == 1 {
+            (leg.turn_end_m(), leg.straight_duration_s())
+        } else {
+            (leg.turn_end_m() + velocity * (run_s * run as f64), run_s)
+        };
+        Some(Piece {
+            start_m,
+            course_rad: leg.course_rad,
+            velocity_mps: velocity,
+            elapsed_s: turn_s + run_s * run as f64,
+            duration_s,
+            turning: false,
+            changing_speed: false,
+        })
+    }
+}
+
+impl Iterator for Pieces<'_> {
+    type Item = Piece;
+
+    fn next(&mut self) -> Option<Piece> {
+        if self.leg.speed_change.is_none() {
+            let piece = self.at_one_speed(self.index);
+            self.index += 1;
+            return piece;
+        }
+        if self.from_m >= self.length_m - SAME_POINT_M {
+            return None;
+        }
+        let to_m = self.next_point()?;
+        let leg = self.leg;
+        let (from_m, arc_m) = (self.from_m, self.arc_m);
+        self.from_m = to_m;
+        let start_s = leg.time_at_distance(from_m);
+        let duration_s = leg.time_at_distance(to_m) - start_s;
+        let from = leg.pose_along(from_m).position_m;
+        let to = leg.pose_along(to_m).position_m;
+        let turning = to_m <= arc_m + SAME_POINT_M && arc_m > 0.0;
+        let course_rad = if turning {
+            let swept = 0.5 * (from_m + to_m) / leg.turn_radius_m;
+            angle::normalize_2pi(leg.start_course_rad + leg.turn_rad.signum() * swept)
+        } else {
+            leg.course_rad
+        };
+        let velocity_mps = if duration_s > 0.0 && duration_s.is_finite() {
+            (to - from) / duration_s
+        } else {
+            DVec2::ZERO
+        };
+        Some(Piece {
+            start_m: from,
+            course_rad,
+            velocity_mps,
+            elapsed_s: start_s,
+            duration_s: if duration_s.is_finite() {
+                duration_s
+            } else {
+                0.0
+            },
+            turning,
+            changing_speed: from_m < self.change_m - SAME_POINT_M,
+        })
+    }
+}
