@@ -66,6 +66,14 @@ impl Findings {
     ) {
         let weights = &scoring.penalties;
         let mut penalties = Vec::new();
+        // A closest approach within one reaction time of the latch leaves no
+        // time for an action to be taken, let alone seen over ground: rule 16
+        // is not judged (the clearance and the manner of passing still are).
+        let no_time_to_act = (latch.latched_at_s..=latch.latched_at_s + scoring.reaction_time_s)
+            .contains(&measured.time_of_min_s);
+        if no_time_to_act {
+            return;
+        }
         match (measured.action_time_s, measured.action_range_m) {
             (Some(action_time_s), Some(range_m)) => {
                 let early_range_m = scoring.late_action_range_m;

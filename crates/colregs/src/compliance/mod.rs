@@ -62,6 +62,9 @@
 //!     however wide the predicted pass (the published evaluators judge it
 //!     so); the manner of passing (port turn, starboard-to-starboard,
 //!     crossing ahead) is judged as well.
+//!   - None of the rule 16 findings below where the closest approach comes
+//!     within `reaction_time_s` of the latch: no action could be taken, let
+//!     alone seen, in that time.
 //!   - [`LateAction`](ComplianceViolation::LateAction): the action began
 //!     more than `reaction_time_s` (60 s) after the latch and, where risk
 //!     arose at or beyond `late_action_range_m` (2 nm), nearer than that.

@@ -71,7 +71,8 @@ pub struct BatchRow {
     #[serde(default)]
     pub course_change_deg_per_nm: f64,
     /// Encounters in which ownship was the give-way vessel (head-on,
-    /// crossing give-way, overtaking) with risk latched.
+    /// crossing give-way, overtaking) with risk latched and rule 16 judged
+    /// (not those whose closest approach came within the reaction time).
     #[serde(default)]
     pub give_way_encounters: usize,
     /// Of those, the ones with a readily apparent alteration as observed.
@@ -182,7 +183,16 @@ impl BatchRow {
         let give_way: Vec<_> = evaluation
             .targets
             .iter()
-            .filter(|target| target.role == Role::GiveWay && target.risk_time_s.is_some())
+            .filter(|target| {
+                // Give-way encounters in which rule 16 was judged (not those
+                // whose closest approach came too soon after risk arose).
+                target.role == Role::GiveWay
+                    && target.risk_time_s.is_some()
+                    && target
+                        .assessment
+                        .as_ref()
+                        .is_some_and(|assessment| assessment.scores.rule_16.is_some())
+            })
             .collect();
         let planning_time_ms = 1000.0 * evaluation.planning_time_s;
         Self {
