@@ -97,6 +97,14 @@ pub struct PlannerConfig {
     /// the lengths apart). Paper: 200 m in open sea, 100 m in a traffic
     /// separation scheme.
     pub clearance_m: f64,
+    /// The passing distance ownship prefers where sea room allows, as a
+    /// multiple of `clearance_m` (default 2): the manoeuvre search first
+    /// looks for one alteration that passes every target this wide (between
+    /// the hulls), and only then for one that keeps `clearance_m`, the hard
+    /// floor. Masters' standing orders ask for far more than a small craft's
+    /// d_th (1-2 nm in open water), and a wider pass leaves room for a vessel
+    /// that does not do what it was predicted to. 1 (or less) turns it off.
+    pub preferred_clearance_factor: f64,
     /// A node this close to the goal tries a final segment onto it, metres.
     /// Default: `step_m`.
     pub goal_tolerance_m: f64,
@@ -158,6 +166,7 @@ impl Default for PlannerConfig {
         Self {
             step_m: 100.0,
             clearance_m: 200.0,
+            preferred_clearance_factor: 2.0,
             goal_tolerance_m: 100.0,
             goal_bias: 0.5,
             phase_two_goal_bias: 0.0,
@@ -257,6 +266,13 @@ impl PlannerConfig {
             if !(value.is_finite() && value > 0.0 && value <= MAX_LENGTH_OR_TIME) {
                 return invalid(field, value, "a number greater than 0 and at most 1e8");
             }
+        }
+        if !(self.preferred_clearance_factor >= 0.0 && self.preferred_clearance_factor <= 100.0) {
+            return invalid(
+                "preferred_clearance_factor",
+                self.preferred_clearance_factor,
+                "a number from 0 to 100",
+            );
         }
         if !(self.sampling_margin_m >= 0.0 && self.sampling_margin_m <= MAX_LENGTH_OR_TIME) {
             return invalid(
@@ -376,7 +392,7 @@ mod tests {
 
     #[test]
     fn each_bad_field_is_named() {
-        let cases: [(PlannerConfig, &str); 6] = [
+        let cases: [(PlannerConfig, &str); 7] = [
             (
                 PlannerConfig {
                     speed_change_mps2: Some(0.0),
@@ -397,6 +413,13 @@ mod tests {
                     ..PlannerConfig::default()
                 },
                 "clearance_m",
+            ),
+            (
+                PlannerConfig {
+                    preferred_clearance_factor: f64::NAN,
+                    ..PlannerConfig::default()
+                },
+                "preferred_clearance_factor",
             ),
             (
                 PlannerConfig {

@@ -392,13 +392,19 @@ impl Planner {
                 })
                 .collect(),
             Some(rate) => {
-                let checker = SafetyChecker::new(
-                    &self.config,
-                    &self.tracks,
-                    own,
-                    problem.goal_m,
-                    problem.start_time_s,
-                );
+                // Where sea room allows, the one manoeuvre passes wider than
+                // d_th (PlannerConfig::preferred_clearance_factor); the same
+                // validator judges it, with the wider clearance.
+                let preferred = PlannerConfig {
+                    clearance_m: self.config.clearance_m * self.config.preferred_clearance_factor,
+                    ..self.config
+                };
+                let configs: &[&PlannerConfig] =
+                    if node == 0 && self.config.preferred_clearance_factor > 1.0 {
+                        &[&preferred, &self.config]
+                    } else {
+                        &[&self.config]
+                    };
                 let points: Vec<DVec2> = if node == 0 {
                     vec![problem.goal_m]
                 } else {
@@ -411,17 +417,26 @@ impl Planner {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),
                 };
-                simplify(
-                    &RateLimitedTurn::from_rate(own.speed_mps, rate),
-                    &checker,
-                    Pose {
-                        position_m: own.position_m,
-                        course_rad: own.course_rad,
-                    },
-                    speeds,
-                    &points,
-                    &root,
-                )?
+                configs.iter().find_map(|config| {
+                    let checker = SafetyChecker::new(
+                        config,
+                        &self.tracks,
+                        own,
+                        problem.goal_m,
+                        problem.start_time_s,
+                    );
+                    simplify(
+                        &RateLimitedTurn::from_rate(own.speed_mps, rate),
+                        &checker,
+                        Pose {
+                            position_m: own.position_m,
+                            course_rad: own.course_rad,
+                        },
+                        speeds,
+                        &points,
+                        &root,
+                    )
+                })?
             }
         };
         let mut waypoints = Vec::with_capacity(legs.len() + 1);
@@ -469,5 +484,55 @@ impl Planner {
             encounters,
             statistics: *statistics,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vorrt_colregs::VesselState;
+    use vorrt_jfs::TargetState;
+
+    /// The smallest distance between hulls along `plan`, sampled every 2 s,
+    /// to a target on `track`.
+    fn min_hull_distance_m(plan: &Plan, track: &LinearTrack, own_length_m: f64) -> f64 {
+        let contact_m = vorrt_colregs::rules::contact_range_m(own_length_m, track.vessel.length_m);
+        let steps = (plan.duration_s() / 2.0).ceil() as usize;
+        (0..=steps)
+            .filter_map(|step| {
+                let elapsed_s = step as f64 * 2.0;
+                let pose = plan.pose_at(elapsed_s)?;
+                Some(pose.position_m.distance(track.position_at(elapsed_s)) - contact_m)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    #[test]
+    fn the_manoeuvre_passes_at_the_preferred_distance_where_sea_room_allows() {
+        // A vessel lying still 330 m east of ownship's route north, its hull
+        // 255 m off ownship's: d_th (200 m) is kept on the route itself.
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+        let target = TargetState::constant_velocity(VesselState::new(
+            DVec2::new(330.0, 6000.0),
+            0.0,
+            0.0,
+            50.0,
+        ));
+        let track = target.track();
+        let problem = PlanningProblem::new(own, DVec2::new(0.0, 12_000.0), vec![target]);
+        let pass_m = |factor: f64| {
+            let config = PlannerConfig {
+                preferred_clearance_factor: factor,
+                ..PlannerConfig::default()
+            };
+            let plan = Planner::new(config).unwrap().plan(&problem, 7).unwrap();
+            min_hull_distance_m(&plan, &track, own.length_m)
+        };
+        let (preferred, floor) = (pass_m(2.0), pass_m(1.0));
+        let clearance_m = PlannerConfig::default().clearance_m;
+        // The chords of the turns are within a few metres of the arcs.
+        assert!(preferred >= 2.0 * clearance_m - 5.0, "{preferred} m");
+        assert!(floor >= clearance_m - 5.0, "{floor} m");
+        assert!(floor < preferred, "{floor} m vs {preferred} m");
     }
 }
