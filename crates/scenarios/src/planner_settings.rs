@@ -15,6 +15,10 @@ pub struct PlannerSettings {
     /// paper uses 100 in a traffic separation scheme).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub clearance_m: Option<f64>,
+    /// The passing distance preferred where sea room allows, as a multiple
+    /// of `clearance_m` (default 2; 1 turns it off).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub preferred_clearance_factor: Option<f64>,
     /// `d'`, the joint forward step, metres (default 100).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub step_m: Option<f64>,
@@ -113,6 +117,10 @@ impl PlannerSettings {
     pub(crate) fn set_numbers(&self) -> Vec<(&'static str, f64)> {
         [
             ("clearance_m", self.clearance_m),
+            (
+                "preferred_clearance_factor",
+                self.preferred_clearance_factor,
+            ),
             ("step_m", self.step_m),
             ("goal_tolerance_m", self.goal_tolerance_m),
             ("nodes_per_route_step", self.nodes_per_route_step),
@@ -155,6 +163,11 @@ impl PlannerSettings {
         };
         let same = |value: f64| value;
         set(&mut config.clearance_m, self.clearance_m, same);
+        set(
+            &mut config.preferred_clearance_factor,
+            self.preferred_clearance_factor,
+            same,
+        );
         set(&mut config.step_m, self.step_m, same);
         set(&mut config.goal_tolerance_m, self.goal_tolerance_m, same);
         set(&mut config.goal_bias, self.goal_bias, same);
