@@ -335,6 +335,7 @@ mod tests {
     fn every_field_maps_to_si() {
         let settings = PlannerSettings {
             clearance_m: Some(100.0),
+            preferred_clearance_factor: Some(1.5),
             step_m: Some(50.0),
             goal_tolerance_m: Some(60.0),
             goal_bias: Some(0.3),
@@ -364,6 +365,7 @@ mod tests {
         let config = settings.apply_to(PlannerConfig::default());
         config.validate().expect("valid");
         assert_eq!(config.clearance_m, 100.0);
+        assert_eq!(config.preferred_clearance_factor, 1.5);
         assert_eq!(config.step_m, 50.0);
         assert_eq!(config.goal_tolerance_m, 60.0);
         assert_eq!(config.nodes_per_route_step, 4.0);
