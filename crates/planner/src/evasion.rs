@@ -118,6 +118,60 @@ pub fn evasive_leg<M: MotionModel>(
     model: &M,
     speed_change_mps2: f64,
 ) -> (Leg, EvasiveManeuver) {
+    evasive_leg_holding(
+        problem,
+        horizon_s,
+        courses,
+        clearance_m,
+        model,
+        speed_change_mps2,
+        None,
+    )
+}
+
+/// How much farther (metres) another course must keep from every target
+/// than the evasive manoeuvre in force before [`evasive_leg_holding`]
+/// abandons it, when neither keeps the clearance: a vessel that swings from
+/// one evasive course to another as the predictions wander (rule 8(b): a
+/// succession of alterations is not readily apparent, rule 8(e)) gets closer
+/// than one that holds a course that keeps nearly as far.
+pub const EVASION_HOLD_MARGIN_M: f64 = 100.0;
+
+/// As [`evasive_leg`], with the evasive manoeuvre in force, `holding`, tried
+/// first: it is kept if it still keeps the clearance, or if no other course
+/// and speed keeps the clearance nor keeps [`EVASION_HOLD_MARGIN_M`] farther.
+///
+/// ```
+/// use vorrt_planner::{evasive_leg, evasive_leg_holding, PlanningProblem};
+/// use vorrt_colregs::VesselState;
+/// use vorrt_jfs::{RateLimitedTurn, TargetState};
+/// use glam::DVec2;
+/// // Boxed in by vessels lying still on a ring of 600 m: nothing keeps 200 m
+/// // at speed; holding a course whose pass is nearly as good is kept.
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let targets = (0..16).map(|k| {
+///     let bearing = f64::from(k) * std::f64::consts::TAU / 16.0;
+///     let at = 600.0 * DVec2::new(bearing.sin(), bearing.cos());
+///     TargetState::constant_velocity(VesselState::new(at, 0.0, 0.0, 50.0))
+/// }).collect();
+/// let problem = PlanningProblem::new(own, DVec2::new(0.0, 5000.0), targets);
+/// let model = RateLimitedTurn { turn_radius_m: 150.0 };
+/// let (_, best) = evasive_leg(&problem, 600.0, 72, 1000.0, &model, 0.1);
+/// let mut holding = best;
+/// holding.course_rad += 5f64.to_radians();
+/// let (_, kept) = evasive_leg_holding(&problem, 600.0, 72, 1000.0, &model, 0.1, Some(holding));
+/// assert_eq!(kept.course_rad, holding.course_rad);
+/// ```
+#[must_use]
+pub fn evasive_leg_holding<M: MotionModel>(
+    problem: &PlanningProblem,
+    horizon_s: f64,
+    courses: usize,
+    clearance_m: f64,
+    model: &M,
+    speed_change_mps2: f64,
+    holding: Option<EvasiveManeuver>,
+) -> (Leg, EvasiveManeuver) {
     let own = problem.ownship;
     let service_mps = problem.service_speed_mps();
     let from = Pose {
@@ -185,6 +239,20 @@ pub fn evasive_leg<M: MotionModel>(
         (1..=courses / 2)
             .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
     );
+    // The manoeuvre in force, judged afresh, first; it stays the best unless
+    // another keeps the clearance or keeps clearly farther.
+    let mut held: Option<(Leg, EvasiveManeuver)> = None;
+    if let Some(holding) = holding {
+        let leg = leg_for(holding.course_rad, holding.speed_mps);
+        let maneuver = EvasiveManeuver {
+            min_distance_m: keep(&leg),
+            ..holding
+        };
+        if maneuver.min_distance_m >= clearance_m {
+            return (leg, maneuver);
+        }
+        held = Some((leg, maneuver));
+    }
     let mut best: Option<(Leg, EvasiveManeuver)> = None;
     for factor in EVASION_SPEED_FACTORS {
         let speed_mps = factor * service_mps;
@@ -207,6 +275,13 @@ pub fn evasive_leg<M: MotionModel>(
                 best = Some((leg, maneuver));
             }
         }
+    }
+    if let Some((leg, maneuver)) = held
+        && best.as_ref().is_none_or(|(_, other)| {
+            other.min_distance_m < maneuver.min_distance_m + EVASION_HOLD_MARGIN_M
+        })
+    {
+        return (leg, maneuver);
     }
     best.unwrap_or_else(|| {
         let leg = leg_for(own.course_rad, service_mps);

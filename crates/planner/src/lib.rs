@@ -36,7 +36,9 @@ pub mod vorrt;
 
 pub use config::{Compliance, NearestIndex, PlannerConfig, Turning};
 pub use error::PlannerError;
-pub use evasion::{EvasiveManeuver, evasive_course, evasive_leg};
+pub use evasion::{
+    EVASION_HOLD_MARGIN_M, EvasiveManeuver, evasive_course, evasive_leg, evasive_leg_holding,
+};
 pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
 pub use validity::{EncounterState, MotionValidator, check_legs};

@@ -4,8 +4,9 @@
 //! target's hull.
 //!
 //! 8 cases in a debug run; `VORRT_HEAVY_TESTS=1` runs 128. Targets that turn
-//! suddenly and unannounced are left out here: in 1000-run campaigns they
-//! still end in contact in 0.1-0.2 % of runs (`docs/evaluation.md`).
+//! suddenly and unannounced are left out of the property: no open-sea
+//! campaign row with them collides now, but a sudden turn can leave no
+//! room (`docs/evaluation.md`).
 
 use proptest::prelude::*;
 use vorrt_scenarios::{OpenSeaSpec, TargetBehaviour, evaluate, simulate};
@@ -42,4 +43,26 @@ proptest! {
         let limit = record.max_turn_rate_rad_s.unwrap_or(f64::INFINITY).to_degrees();
         prop_assert!(evaluation.max_turn_rate_deg_s <= limit * (1.0 + 1e-9));
     }
+}
+
+/// Run 231 of the 1000-run campaign with 8 noisy targets (seed 11): after a
+/// string of failed plans, the evasive manoeuvre used to swing from course
+/// to course every retry while a noisy vessel overtook from the starboard
+/// quarter, and the hulls touched. The manoeuvre in force is now held unless
+/// another is clearly better (`vorrt_planner::evasive_leg_holding`).
+#[test]
+fn evasive_manoeuvre_is_held_while_overtaken_by_a_wandering_vessel() {
+    let behaviour = TargetBehaviour::Noisy {
+        course_sigma_deg: 5.0,
+        speed_sigma_kn: 0.5,
+    };
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(behaviour);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 231).expect("generated");
+    let record = simulate(&scenario, 11_777_205_761_601_432_594).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        !evaluation.collision,
+        "contact at {:.1} m",
+        evaluation.min_distance_m
+    );
 }

@@ -6,7 +6,8 @@ use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
-    Compliance, Plan, PlanStatistics, Planner, PlanningProblem, Waypoint, check_legs, evasive_leg,
+    Compliance, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem, Waypoint,
+    check_legs, evasive_leg_holding,
 };
 
 use super::target::SimulatedTarget;
@@ -26,6 +27,9 @@ pub(super) struct ActivePlan {
     /// Whether this is the evasive manoeuvre (judged against nothing; only
     /// the retry timer ends it).
     pub(super) evasive: bool,
+    /// The evasive manoeuvre, when this is one: held again at the next
+    /// failure unless another is clearly better (`evasive_leg_holding`).
+    pub(super) evasion: Option<EvasiveManeuver>,
 }
 
 /// What one planner call is for.
@@ -85,6 +89,7 @@ pub(super) fn plan_now(
                     predicted: problem.targets.clone(),
                     anticipated,
                     evasive: false,
+                    evasion: None,
                 });
                 return;
             }
@@ -121,13 +126,15 @@ pub(super) fn plan_now(
     let evasion = if keep_plan {
         None
     } else {
-        let (leg, evasion) = evasive_leg(
+        let holding = active.as_ref().and_then(|active| active.evasion);
+        let (leg, evasion) = evasive_leg_holding(
             problem,
             EVASION_HORIZON_S,
             EVASION_COURSES,
             call.clearance_m,
             model,
             call.speed_change_mps2,
+            holding,
         );
         *active = Some(ActivePlan {
             plan: leg_plan(leg, time_s),
@@ -135,6 +142,7 @@ pub(super) fn plan_now(
             predicted: problem.targets.clone(),
             anticipated: vec![Vec::new(); problem.targets.len()],
             evasive: true,
+            evasion: Some(evasion),
         });
         Some(evasion)
     };
