@@ -147,6 +147,10 @@ pub fn update_latch_steady(
             }
             match classify(&seen, target, parameters) {
                 Encounter::None => None,
+                // Not one that has already passed on the course steered: it
+                // would be released at once and latched again at the next
+                // step, for ever.
+                encounter if has_passed(own, target, encounter, parameters) => None,
                 encounter => Some(EncounterLatch::new(encounter, &seen, time_s)),
             }
         }
@@ -170,6 +174,27 @@ mod tests {
         let own_later = VesselState::new(DVec2::new(500.0, 3600.0), 0.0, 6.0, 50.0);
         let target_later = VesselState::new(DVec2::new(0.0, 2400.0), PI, 6.0, 50.0);
         assert!(update_latch(latch, &own_later, &target_later, 600.0, &params).is_none());
+    }
+
+    #[test]
+    fn a_steady_course_does_not_latch_an_encounter_already_passed() {
+        let params = RuleParameters::default();
+        // Ownship has turned from west to north; a vessel heading west lies
+        // on its port quarter, the range opening. On the course held a
+        // minute ago (west) the two would still be in an encounter.
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let target = VesselState::new(DVec2::new(-1000.0, -1200.0), 1.5 * PI, 5.0, 50.0);
+        let seen = VesselState {
+            course_rad: 1.5 * PI,
+            ..own
+        };
+        let encounter = classify(&seen, &target, &params);
+        assert!(assess_risk(&seen, &target, &params).at_risk && encounter != Encounter::None);
+        assert!(has_passed(&own, &target, encounter, &params));
+        assert_eq!(
+            update_latch_steady(None, &own, 1.5 * PI, &target, 0.0, &params),
+            None
+        );
     }
 
     #[test]

@@ -51,6 +51,14 @@ pub struct PlanningProblem {
     /// missing entries count as none.
     #[serde(default)]
     pub alterations: Vec<f64>,
+    /// The course ownship held steadily before the turn it is in, if it is
+    /// turning at the start (`vorrt_colregs::rules::steady_course_rad` of its
+    /// history, as a closed loop knows it), radians; `None` (the default):
+    /// its present course. An encounter that begins within an observation
+    /// window is judged against it, as the closed loop and the evaluation
+    /// judge it.
+    #[serde(default)]
+    pub steady_course_rad: Option<f64>,
 }
 
 impl PlanningProblem {
@@ -65,6 +73,7 @@ impl PlanningProblem {
             targets,
             encounters: Vec::new(),
             alterations: Vec::new(),
+            steady_course_rad: None,
         }
     }
 
@@ -104,6 +113,12 @@ impl PlanningProblem {
             return bad("start_time_s".into(), "is more than 1e12 s from 0");
         }
         check_vessel("ownship", &self.ownship)?;
+        if self
+            .steady_course_rad
+            .is_some_and(|course| !course.is_finite())
+        {
+            return bad("steady_course_rad".into(), "is not a finite number");
+        }
         match self.service_speed_mps {
             None if self.ownship.speed_mps < MIN_OWNSHIP_SPEED_MPS => {
                 return bad(

@@ -96,6 +96,10 @@ pub struct SafetyChecker<'a> {
     pub goal_m: DVec2,
     /// The clock at the plan's start, seconds (time stamps of new latches).
     pub start_time_s: f64,
+    /// The course ownship held steadily before the turn it is in at the
+    /// plan's start (`PlanningProblem::steady_course_rad`), radians; its
+    /// present course when it is not turning.
+    pub steady_course_rad: f64,
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -114,7 +118,18 @@ impl<'a> SafetyChecker<'a> {
             ownship,
             goal_m,
             start_time_s,
+            steady_course_rad: ownship.course_rad,
         }
+    }
+
+    /// The checker with `steady_course_rad` (if given) as the course ownship
+    /// held before the turn it is in at the plan's start.
+    #[must_use]
+    pub fn with_steady_course(mut self, steady_course_rad: Option<f64>) -> Self {
+        if let Some(course) = steady_course_rad {
+            self.steady_course_rad = course;
+        }
+        self
     }
 
     /// The distance between reference points that keeps `d_th` between the

@@ -144,6 +144,15 @@ impl MotionValidator for SafetyChecker<'_> {
     ) -> Result<(), RejectionCause> {
         let piece_error_m = leg.piece_error_m();
         let timing_error_m = leg.timing_error_m();
+        // Before the leg: on the first leg of a plan that starts in a turn,
+        // the course held before that turn (the closed loop's history);
+        // otherwise the leg's own start course (a turn between legs begins
+        // with the next leg).
+        let (before_s, before_course_rad) = if start_elapsed_s <= 0.0 {
+            (start_elapsed_s - 1e-3, self.steady_course_rad)
+        } else {
+            (start_elapsed_s - 1e-3, leg.start_course_rad)
+        };
         for piece in leg.pieces(self.config.step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -175,8 +184,8 @@ impl MotionValidator for SafetyChecker<'_> {
                 // still the steady one while the turn is under way.
                 let heading_rad = leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad;
                 let steady = steady_course_rad(
-                    &[start_elapsed_s, end_elapsed_s],
-                    &[leg.start_course_rad, heading_rad],
+                    &[before_s, start_elapsed_s, end_elapsed_s],
+                    &[before_course_rad, leg.start_course_rad, heading_rad],
                     STEADY_COURSE_WINDOW_S,
                 );
                 (heading_rad, steady.unwrap_or(heading_rad))
@@ -185,8 +194,13 @@ impl MotionValidator for SafetyChecker<'_> {
                 // leg's turn while the turn is within the window.
                 let turn_end_s = start_elapsed_s + leg.turn_duration_s();
                 let steady = steady_course_rad(
-                    &[start_elapsed_s, turn_end_s, end_elapsed_s],
-                    &[leg.start_course_rad, leg.course_rad, leg.course_rad],
+                    &[before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
+                    &[
+                        before_course_rad,
+                        leg.start_course_rad,
+                        leg.course_rad,
+                        leg.course_rad,
+                    ],
                     STEADY_COURSE_WINDOW_S,
                 );
                 (piece.course_rad, steady.unwrap_or(piece.course_rad))
@@ -233,7 +247,8 @@ pub fn check_legs(
         problem.ownship_at_service_speed(),
         problem.goal_m,
         problem.start_time_s,
-    );
+    )
+    .with_steady_course(problem.steady_course_rad);
     let targets = tracks.len();
     let mut state = EncounterState {
         latches: (0..targets)

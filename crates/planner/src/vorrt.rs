@@ -234,7 +234,8 @@ impl Planner {
             own,
             problem.goal_m,
             problem.start_time_s,
-        );
+        )
+        .with_steady_course(problem.steady_course_rad);
         let model = InstantTurn {
             max_turn_rad: config.max_turn_per_step_rad,
         };
@@ -424,7 +425,8 @@ impl Planner {
                         own,
                         problem.goal_m,
                         problem.start_time_s,
-                    );
+                    )
+                    .with_steady_course(problem.steady_course_rad);
                     simplify(
                         &RateLimitedTurn::from_rate(own.speed_mps, rate),
                         &checker,

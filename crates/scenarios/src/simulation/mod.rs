@@ -400,6 +400,7 @@ pub fn simulate_with(
                 targets: predicted.clone(),
                 encounters: latches.clone(),
                 alterations: alterations.clone(),
+                steady_course_rad: Some(steady_course_rad),
             };
             // The plan in force is kept while the planner's own validity
             // check still accepts the rest of it, as the targets are now
