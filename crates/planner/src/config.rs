@@ -80,6 +80,25 @@ impl Compliance {
     }
 }
 
+/// How much of the search one call of [`Planner::plan_with`](crate::Planner::plan_with)
+/// runs: every phase of every attempt, or only the goal-biased first phase.
+///
+/// A closed loop retrying for a fully compliant plan while it sails a
+/// fallback plan asks again every few seconds, so each retry is one more
+/// draw: measured on the closed loop (`docs/performance.md`, 2026-11-30
+/// retries), 14 % of the successful attempts succeed in phase 2 while
+/// phase 2 draws half the samples of an attempt that fails, on the larger
+/// tree (dearer nearest-node scans). `FirstPhase` keeps the restarts.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SearchEffort {
+    /// Both phases of every attempt (Algorithm 2, erratum 4): [`Planner::plan`](crate::Planner::plan).
+    #[default]
+    Full,
+    /// Only the first, goal-biased phase of every attempt (restarts kept).
+    FirstPhase,
+}
+
 /// Every knob of the VORRT planner.
 ///
 /// Defaults are the paper's where it gives one (`d' = 100 m`, `d_th = 200 m`,

@@ -34,7 +34,7 @@ mod tree;
 pub mod validity;
 pub mod vorrt;
 
-pub use config::{Compliance, NearestIndex, PlannerConfig, Turning};
+pub use config::{Compliance, NearestIndex, PlannerConfig, SearchEffort, Turning};
 pub use error::PlannerError;
 pub use evasion::{
     EVASION_HOLD_MARGIN_M, EvasiveManeuver, evasive_course, evasive_leg, evasive_leg_holding,

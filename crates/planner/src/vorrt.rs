@@ -13,7 +13,7 @@
 //! When both phases fail the tree is grown again from the root, up to
 //! `max_restarts` times, then the planner says why it found no safe path.
 
-use crate::config::PlannerConfig;
+use crate::config::{PlannerConfig, SearchEffort};
 use crate::error::PlannerError;
 use crate::plan::{Plan, PlanStatistics, Waypoint};
 use crate::problem::PlanningProblem;
@@ -97,12 +97,26 @@ impl Planner {
     /// [`PlannerError::NoSafePath`] when every restart failed, and
     /// [`PlannerError::BudgetExhausted`] when the time budget ran out.
     pub fn plan(&mut self, problem: &PlanningProblem, seed: u64) -> Result<Plan, PlannerError> {
+        self.plan_with(problem, seed, SearchEffort::Full)
+    }
+
+    /// As [`plan`](Self::plan), running as much of the search as `effort`
+    /// says (the manoeuvre search from the root always runs first).
+    ///
+    /// # Errors
+    /// As [`plan`](Self::plan).
+    pub fn plan_with(
+        &mut self,
+        problem: &PlanningProblem,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> Result<Plan, PlannerError> {
         // Budgets follow the route length (`PlannerConfig::for_route`), and a
         // failure that spent every phase's node quota says so.
         let configured = self.config;
         let route_m = problem.ownship.position_m.distance(problem.goal_m);
         self.config = configured.for_route(route_m);
-        let result = self.plan_within_budgets(problem, seed);
+        let result = self.plan_within_budgets(problem, seed, effort);
         let config = std::mem::replace(&mut self.config, configured);
         result.map_err(|error| error.blame_budget(&config, route_m))
     }
@@ -111,6 +125,7 @@ impl Planner {
         &mut self,
         problem: &PlanningProblem,
         seed: u64,
+        effort: SearchEffort,
     ) -> Result<Plan, PlannerError> {
         problem.validate()?;
         let started = Instant::now();
@@ -183,7 +198,14 @@ impl Planner {
                 Some(0)
             } else {
                 let mut found = None;
-                for goal_bias in [config.goal_bias, config.phase_two_goal_bias] {
+                let phases = match effort {
+                    SearchEffort::Full => 2,
+                    SearchEffort::FirstPhase => 1,
+                };
+                for goal_bias in [config.goal_bias, config.phase_two_goal_bias]
+                    .into_iter()
+                    .take(phases)
+                {
                     match self.grow(problem, &mut sampler, goal_bias, &mut statistics, started)? {
                         Growth::Reached(node) => {
                             found = Some(node);
@@ -536,5 +558,45 @@ mod tests {
         assert!(preferred >= 2.0 * clearance_m - 5.0, "{preferred} m");
         assert!(floor >= clearance_m - 5.0, "{floor} m");
         assert!(floor < preferred, "{floor} m vs {preferred} m");
+    }
+
+    /// A goal no path reaches (a vessel lies stopped on it), with phases
+    /// that end on their sample budget.
+    fn blocked() -> (PlanningProblem, PlannerConfig) {
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = DVec2::new(0.0, 3000.0);
+        let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
+        let config = PlannerConfig {
+            nodes_per_phase: 40,
+            samples_per_phase: 40,
+            nodes_per_route_step: 0.0,
+            max_restarts: 1,
+            ..PlannerConfig::default()
+        };
+        (PlanningProblem::new(own, goal_m, vec![blocker]), config)
+    }
+
+    fn samples_of(result: Result<Plan, PlannerError>) -> u64 {
+        result
+            .expect_err("the goal is blocked")
+            .statistics()
+            .expect("a failed search says what it did")
+            .samples
+    }
+
+    #[test]
+    fn first_phase_effort_skips_phase_two_and_keeps_the_restarts() {
+        let (problem, config) = blocked();
+        let mut planner = Planner::new(config).expect("valid");
+        let full = samples_of(planner.plan(&problem, 3));
+        let first = samples_of(planner.plan_with(&problem, 3, SearchEffort::FirstPhase));
+        // Two attempts (one restart) of two phases, or of one, 40 samples each.
+        assert_eq!(full, 2 * 2 * 40);
+        assert_eq!(first, 2 * 40);
+        // The default effort is the full search, as `plan` runs it.
+        assert_eq!(
+            samples_of(planner.plan_with(&problem, 3, SearchEffort::default())),
+            full
+        );
     }
 }

@@ -141,3 +141,46 @@ fn when_planning_fails_ownship_evades_instead_of_holding_course() {
     // Holding course would have met the target head-on.
     assert!(evaluation.min_distance_m >= scenario.planner_config().expect("valid").clearance_m);
 }
+
+#[test]
+fn retries_search_the_first_phase_only_and_the_run_stays_safe() {
+    // As above: every plan fails, at every level of the graded fallback, so
+    // ownship evades and retries every RETRY_AFTER_S. A call other than a
+    // retry draws both phases of both attempts at each of the three levels;
+    // a retry draws the first phase only: half the samples.
+    let mut scenario = fixture("paper/head_on.ron");
+    scenario.planner.nodes_per_phase = Some(10);
+    scenario.planner.samples_per_phase = Some(10);
+    scenario.planner.max_restarts = Some(1);
+    scenario.planner.nodes_per_route_step = Some(0.0);
+    scenario.planner.instant_turns = Some(true);
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let (levels, attempts, samples_per_phase) = (3, 2, 10);
+    let retries: Vec<_> = record
+        .plans
+        .iter()
+        .filter(|event| event.trigger == PlanTrigger::Retry)
+        .collect();
+    assert!(retries.len() >= 3, "{} retries", retries.len());
+    for event in &record.plans {
+        assert!(!event.succeeded);
+        let phases = if event.trigger == PlanTrigger::Retry {
+            1
+        } else {
+            2
+        };
+        assert_eq!(
+            event.samples_drawn,
+            levels * attempts * phases * samples_per_phase,
+            "{:?} at {} s",
+            event.trigger,
+            event.time_s
+        );
+    }
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        evaluation.clearance_kept,
+        "min {} m",
+        evaluation.min_distance_m
+    );
+}

@@ -20,7 +20,11 @@
 //! duties (directions only, then safety only: rules 2(b), 17(b)), each
 //! departure recorded; when even that fails, ownship keeps the plan in force
 //! if it still holds, else turns (at its rate of turn) onto the evasive course
-//! (`vorrt_planner::evasive_leg`), and tries again after [`RETRY_AFTER_S`].
+//! (`vorrt_planner::evasive_leg`). While ownship sails a fallback plan or
+//! the evasive manoeuvre it tries again for a fully compliant plan after
+//! [`RETRY_AFTER_S`], or at once when the encounters in force change; a
+//! retry grows the planner's trees in the first, goal-biased phase only
+//! (`vorrt_planner::SearchEffort::FirstPhase`), since it is one draw of many.
 //! Every vessel's state is recorded at every step, and the encounters are
 //! latched from the true states as a bridge officer would.
 
@@ -38,7 +42,9 @@ use vorrt_planner::{
 mod planning;
 mod target;
 
-use planning::{ActivePlan, PlanCall, follow, plan_now, remaining_legs, replan_trigger};
+use planning::{
+    ActivePlan, PlanCall, RetryTimer, follow, plan_now, remaining_legs, replan_trigger,
+};
 use target::SimulatedTarget;
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
@@ -54,7 +60,9 @@ pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
 /// (10°, twice the course noise of a `noisy` target).
 pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
 
-/// After a failed plan, seconds until ownship tries again.
+/// After a failed plan (or a fallback plan), seconds until ownship tries
+/// again for a plan that keeps every rule, unless the encounters in force
+/// change first.
 pub const RETRY_AFTER_S: f64 = 20.0;
 
 /// How far ahead the evasive course is judged, seconds.
@@ -113,6 +121,11 @@ pub struct PlanEvent {
     /// (failure) is `safety_only` too.
     #[serde(default)]
     pub compliance: Compliance,
+    /// Random samples drawn by every search of this call, over every level
+    /// of the graded fallback tried (`statistics` holds only the search
+    /// whose plan came back): the call's work, independent of the machine.
+    #[serde(default)]
+    pub samples_drawn: u64,
 }
 
 impl PlanEvent {
@@ -338,7 +351,7 @@ pub fn simulate_with(
     };
     let mut active: Option<ActivePlan> = None;
     let mut trigger = Some(PlanTrigger::Initial);
-    let mut retry_at_s = f64::INFINITY;
+    let mut retry = RetryTimer::idle();
     let mut time_s = 0.0;
     let mut step = 0usize;
     // Ownship's courses so far, for the course an observer still sees
@@ -386,7 +399,7 @@ pub fn simulate_with(
                 settings.replan_deviation_m,
             );
         }
-        if trigger.is_none() && time_s >= retry_at_s {
+        if trigger.is_none() && retry.due(time_s, &latches) {
             trigger = Some(PlanTrigger::Retry);
         }
         if let Some(why) = trigger.take() {
@@ -440,7 +453,7 @@ pub fn simulate_with(
                     },
                     &mut active,
                     &mut record.plans,
-                    &mut retry_at_s,
+                    &mut retry,
                 );
             }
         }

@@ -6,14 +6,55 @@ use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
-    Compliance, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem, Waypoint,
-    check_legs, evasive_leg_holding,
+    Compliance, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem, SearchEffort,
+    Waypoint, check_legs, evasive_leg_holding,
 };
 
 use super::target::SimulatedTarget;
 use super::{
     EVASION_COURSES, EVASION_HORIZON_S, PlanEvent, PlanTrigger, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
 };
+
+/// When ownship, sailing a fallback plan (or the evasive manoeuvre), next
+/// tries for a plan that keeps every rule: [`RETRY_AFTER_S`] after the last
+/// failure, or at once when the encounters in force change (one released, a
+/// new one latched, or a reference course changed), since the situation the
+/// failure was judged in is then gone.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct RetryTimer {
+    /// When the next retry is due, seconds (infinite: none pending).
+    at_s: f64,
+    /// The encounters in force at the last failure.
+    situation: Vec<Option<EncounterLatch>>,
+}
+
+impl RetryTimer {
+    /// No retry pending.
+    pub(super) fn idle() -> Self {
+        Self {
+            at_s: f64::INFINITY,
+            situation: Vec::new(),
+        }
+    }
+
+    /// A plan that keeps every rule is in force: nothing to retry.
+    fn succeeded(&mut self) {
+        *self = Self::idle();
+    }
+
+    /// The search for a fully compliant plan failed at `time_s` with
+    /// `encounters` in force.
+    fn failed(&mut self, time_s: f64, encounters: &[Option<EncounterLatch>]) {
+        self.at_s = time_s + RETRY_AFTER_S;
+        self.situation.clear();
+        self.situation.extend_from_slice(encounters);
+    }
+
+    /// Whether a retry is due at `time_s` with `encounters` in force.
+    pub(super) fn due(&self, time_s: f64, encounters: &[Option<EncounterLatch>]) -> bool {
+        self.at_s.is_finite() && (time_s >= self.at_s || self.situation != encounters)
+    }
+}
 
 /// The plan ownship is following, with what it assumed about the targets.
 #[derive(Debug)]
@@ -44,7 +85,9 @@ pub(super) struct PlanCall {
 /// Calls the planners on `problem`, from all the rules down the graded
 /// fallback, and puts what comes of it in force: the first plan found, or on
 /// failure the previous plan if the planner's validity check still accepts
-/// it, or else the evasive leg (sailed with `model`).
+/// it, or else the evasive leg (sailed with `model`). A retry searches
+/// with the first phase only ([`SearchEffort::FirstPhase`]): it is one more
+/// draw of many while ownship sails a fallback plan.
 pub(super) fn plan_now(
     planners: &mut [Planner],
     problem: &PlanningProblem,
@@ -52,22 +95,29 @@ pub(super) fn plan_now(
     call: PlanCall,
     active: &mut Option<ActivePlan>,
     plans: &mut Vec<PlanEvent>,
-    retry_at_s: &mut f64,
+    retry: &mut RetryTimer,
 ) {
     let time_s = problem.start_time_s;
     let started = Instant::now();
     let mut first_error = None;
     let mut spent = PlanStatistics::default();
+    let mut samples_drawn = 0u64;
+    let effort = if call.why == PlanTrigger::Retry {
+        SearchEffort::FirstPhase
+    } else {
+        SearchEffort::Full
+    };
     for planner in planners.iter_mut() {
         let compliance = planner.config().compliance;
-        match planner.plan(problem, call.seed) {
+        match planner.plan_with(problem, call.seed, effort) {
             Ok(plan) => {
-                *retry_at_s = if compliance == Compliance::Full {
-                    f64::INFINITY
+                samples_drawn += plan.statistics.samples;
+                if compliance == Compliance::Full {
+                    retry.succeeded();
                 } else {
                     // A fallback plan is sailed until a compliant one exists.
-                    time_s + RETRY_AFTER_S
-                };
+                    retry.failed(time_s, &problem.encounters);
+                }
                 let mut statistics = plan.statistics;
                 statistics.elapsed_s += spent.elapsed_s;
                 plans.push(PlanEvent {
@@ -81,6 +131,7 @@ pub(super) fn plan_now(
                     evasive_course_deg: None,
                     evasive_speed_mps: None,
                     compliance,
+                    samples_drawn,
                 });
                 let anticipated = plan.anticipated_encounters();
                 *active = Some(ActivePlan {
@@ -95,6 +146,7 @@ pub(super) fn plan_now(
             }
             Err(error) => {
                 if let Some(statistics) = error.statistics() {
+                    samples_drawn += statistics.samples;
                     spent.elapsed_s += statistics.elapsed_s;
                     if first_error.is_none() {
                         let elapsed_s = spent.elapsed_s;
@@ -108,7 +160,7 @@ pub(super) fn plan_now(
             }
         }
     }
-    *retry_at_s = time_s + RETRY_AFTER_S;
+    retry.failed(time_s, &problem.encounters);
     if spent.elapsed_s == 0.0 {
         spent.elapsed_s = started.elapsed().as_secs_f64();
     }
@@ -156,6 +208,7 @@ pub(super) fn plan_now(
         waypoints: Vec::new(),
         evasive_course_deg: evasion.map(|evasion| evasion.course_rad.to_degrees()),
         evasive_speed_mps: evasion.map(|evasion| evasion.speed_mps),
+        samples_drawn,
         compliance: if keep_plan {
             Compliance::Full
         } else {
@@ -257,4 +310,37 @@ pub(super) fn replan_trigger(
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vorrt_colregs::Encounter;
+
+    fn latch(encounter: Encounter) -> Option<EncounterLatch> {
+        Some(EncounterLatch {
+            encounter,
+            reference_course_rad: 0.0,
+            reference_speed_mps: 6.0,
+            latched_at_s: 0.0,
+        })
+    }
+
+    #[test]
+    fn a_retry_is_due_after_the_wait_or_when_the_encounters_change() {
+        let mut retry = RetryTimer::idle();
+        let situation = vec![latch(Encounter::HeadOn), None];
+        assert!(!retry.due(1e9, &situation), "nothing failed yet");
+        retry.failed(100.0, &situation);
+        assert!(!retry.due(100.0 + RETRY_AFTER_S - 5.0, &situation));
+        assert!(retry.due(100.0 + RETRY_AFTER_S, &situation));
+        // An encounter released, or a new one latched: due at once.
+        assert!(retry.due(105.0, &[None, None]));
+        assert!(retry.due(
+            105.0,
+            &[latch(Encounter::HeadOn), latch(Encounter::Overtaking)]
+        ));
+        retry.succeeded();
+        assert!(!retry.due(1e9, &[None, None]));
+    }
 }
