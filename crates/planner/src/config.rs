@@ -8,12 +8,17 @@ use vorrt_colregs::RuleParameters;
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum NearestIndex {
-    /// A scan over the node positions, stored contiguously. Fastest for trees of
-    /// up to a few thousand nodes (see `docs/performance.md`).
-    #[default]
+    /// A scan over the node positions, stored contiguously: the reference
+    /// the others give the same answer as.
     Linear,
     /// An R*-tree (`rstar`), filled as nodes are accepted.
     RTree,
+    /// The default: the nodes binned in square cells of 1600 m with their
+    /// bounding boxes; a query scans the cells that can hold a node nearer
+    /// than the best so far. Same answer as `Linear`, ties included (see
+    /// `docs/performance.md`, 2026-11-30: cheaper retries).
+    #[default]
+    Grid,
 }
 
 /// How ownship turns along the plan it is given.
@@ -197,7 +202,7 @@ impl Default for PlannerConfig {
             sampling_margin_m: 2.0 * 1852.0,
             lookahead_s: 1800.0,
             time_budget_s: None,
-            nearest_index: NearestIndex::Linear,
+            nearest_index: NearestIndex::Grid,
             turning: Turning::FromLength,
             speed_change_mps2: None,
             compliance: Compliance::Full,

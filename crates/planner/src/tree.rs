@@ -15,6 +15,30 @@ use vorrt_colregs::EncounterLatch;
 
 type IndexedPoint = GeomWithData<[f64; 2], u32>;
 
+/// Side of a cell of [`NearestIndex::Grid`], metres (16 steps of the
+/// default `d'`): of 400, 800, 1600 and 3200 m, the one whose nearest-node
+/// queries took the smallest share of the closed loop on imazu_13, 16, 17
+/// and 20 (`docs/performance.md`).
+const GRID_CELL_M: f64 = 1600.0;
+
+/// The nodes that fall in one cell of the grid, with their bounding box.
+#[derive(Debug, Clone)]
+struct Cell {
+    min_m: DVec2,
+    max_m: DVec2,
+    nodes: Vec<u32>,
+}
+
+impl Cell {
+    /// Squared distance from `point_m` to the box: no node of the cell is
+    /// nearer.
+    fn lower_bound(&self, point_m: DVec2) -> f64 {
+        point_m
+            .clamp(self.min_m, self.max_m)
+            .distance_squared(point_m)
+    }
+}
+
 /// The tree of joint states.
 #[derive(Debug, Default)]
 pub(crate) struct Tree {
@@ -41,6 +65,10 @@ pub(crate) struct Tree {
     targets: usize,
     index: NearestIndex,
     rtree: RTree<IndexedPoint>,
+    /// [`NearestIndex::Grid`]: the occupied cells, and each cell's place in
+    /// `cells` by its integer coordinates.
+    cells: Vec<Cell>,
+    cell_of: std::collections::HashMap<(i64, i64), u32>,
     /// The goal and the cosine of the turn bound, for the two caches below.
     goal: Option<(DVec2, f64)>,
     /// `(distance², node)` of the node nearest the goal (oldest on ties).
@@ -74,6 +102,8 @@ impl Tree {
         self.targets = targets;
         self.index = index;
         self.rtree = RTree::new();
+        self.cells.clear();
+        self.cell_of.clear();
     }
 
     /// Keeps, from now on, the nodes nearest `goal_m` (and nearest facing it
@@ -136,9 +166,30 @@ impl Tree {
                 self.nearest_facing_goal = Some((distance, index));
             }
         }
-        if self.index == NearestIndex::RTree {
-            self.rtree
-                .insert(IndexedPoint::new([position_m.x, position_m.y], index));
+        match self.index {
+            NearestIndex::RTree => self
+                .rtree
+                .insert(IndexedPoint::new([position_m.x, position_m.y], index)),
+            NearestIndex::Grid => {
+                let key = (
+                    (position_m.x / GRID_CELL_M).floor() as i64,
+                    (position_m.y / GRID_CELL_M).floor() as i64,
+                );
+                let cells = &mut self.cells;
+                let cell = *self.cell_of.entry(key).or_insert_with(|| {
+                    cells.push(Cell {
+                        min_m: position_m,
+                        max_m: position_m,
+                        nodes: Vec::new(),
+                    });
+                    (cells.len() - 1) as u32
+                });
+                let cell = &mut self.cells[cell as usize];
+                cell.min_m = cell.min_m.min(position_m);
+                cell.max_m = cell.max_m.max(position_m);
+                cell.nodes.push(index);
+            }
+            NearestIndex::Linear => {}
         }
         index
     }
@@ -178,7 +229,36 @@ impl Tree {
                 .rtree
                 .nearest_neighbor(&[point_m.x, point_m.y])
                 .map(|entry| entry.data),
+            NearestIndex::Grid => self.nearest_in_grid(point_m),
         }
+    }
+
+    /// [`nearest`](Self::nearest) through the grid, with the linear scan's
+    /// answer: the cell whose box is nearest is scanned first, then every
+    /// cell whose box is no farther than the best node so far, comparing
+    /// (distance, index) so that ties go to the older node in any order of
+    /// visit. A cell skipped lies wholly farther than that node.
+    fn nearest_in_grid(&self, point_m: DVec2) -> Option<u32> {
+        let first = self
+            .cells
+            .iter()
+            .min_by(|a, b| a.lower_bound(point_m).total_cmp(&b.lower_bound(point_m)))?;
+        let mut best = (f64::INFINITY, u32::MAX);
+        let scan = |cell: &Cell, best: &mut (f64, u32)| {
+            for &index in &cell.nodes {
+                let distance = self.positions[index as usize].distance_squared(point_m);
+                if distance < best.0 || (distance == best.0 && index < best.1) {
+                    *best = (distance, index);
+                }
+            }
+        };
+        scan(first, &mut best);
+        for cell in &self.cells {
+            if !std::ptr::eq(cell, first) && cell.lower_bound(point_m) <= best.0 {
+                scan(cell, &mut best);
+            }
+        }
+        Some(best.1)
     }
 
     // The scan that `nearest_facing_goal`'s kept answer is tested against.
@@ -199,7 +279,7 @@ impl Tree {
             )
         };
         match self.index {
-            NearestIndex::Linear => {
+            NearestIndex::Linear | NearestIndex::Grid => {
                 let mut best = None;
                 let mut best_distance = f64::INFINITY;
                 for (index, position) in self.positions.iter().enumerate() {
@@ -261,6 +341,37 @@ mod tests {
     use super::*;
 
     #[test]
+    fn grid_gives_the_linear_scans_answer_ties_included() {
+        let mut linear = Tree::default();
+        let mut grid = Tree::default();
+        linear.reset(512, 0, NearestIndex::Linear);
+        grid.reset(512, 0, NearestIndex::Grid);
+        // Points on a 100 m lattice spanning many cells, each twice (ties:
+        // the older copy must win).
+        for i in 0..400u32 {
+            let position = DVec2::new(
+                f64::from(i * 37 % 101) * 100.0 - 3000.0,
+                f64::from(i * 53 % 97) * 100.0 - 4000.0,
+            );
+            for _ in 0..2 {
+                linear.push(position, 0.0, 0.0, 0, &[], &[]);
+                grid.push(position, 0.0, 0.0, 0, &[], &[]);
+            }
+        }
+        for i in 0..500u32 {
+            let probe = DVec2::new(
+                f64::from(i * 7919 % 20011) - 10000.0,
+                f64::from(i * 104_729 % 30011) - 15000.0,
+            );
+            assert_eq!(grid.nearest(probe), linear.nearest(probe), "{probe}");
+        }
+        // On a lattice point between nodes: equal distances, oldest wins.
+        for probe in [DVec2::new(-2950.0, -3950.0), DVec2::new(50.0, 50.0)] {
+            assert_eq!(grid.nearest(probe), linear.nearest(probe), "{probe}");
+        }
+    }
+
+    #[test]
     fn linear_and_rtree_agree() {
         let mut linear = Tree::default();
         let mut indexed = Tree::default();
@@ -287,7 +398,11 @@ mod tests {
 
     #[test]
     fn facing_nearest_skips_nodes_pointing_away() {
-        for index in [NearestIndex::Linear, NearestIndex::RTree] {
+        for index in [
+            NearestIndex::Linear,
+            NearestIndex::RTree,
+            NearestIndex::Grid,
+        ] {
             let mut tree = Tree::default();
             tree.reset(4, 0, index);
             // Nearest to the point, but heading south, away from it.
