@@ -123,6 +123,7 @@ fn nearest_index(c: &mut Criterion) {
     let indexes = [
         ("linear", NearestIndex::Linear),
         ("rtree", NearestIndex::RTree),
+        ("grid", NearestIndex::Grid),
     ];
     // A real problem: the traffic separation scheme, as its fixture sets it.
     let (tss, tss_config) = fixture_problem("paper", "tss");

@@ -147,7 +147,8 @@ fn retries_search_the_first_phase_only_and_the_run_stays_safe() {
     // As above: every plan fails, at every level of the graded fallback, so
     // ownship evades and retries every RETRY_AFTER_S. A call other than a
     // retry draws both phases of both attempts at each of the three levels;
-    // a retry draws the first phase only: half the samples.
+    // a retry draws the first phase only at the two levels that keep rules,
+    // and both at the last, safety only.
     let mut scenario = fixture("paper/head_on.ron");
     scenario.planner.nodes_per_phase = Some(10);
     scenario.planner.samples_per_phase = Some(10);
@@ -164,14 +165,15 @@ fn retries_search_the_first_phase_only_and_the_run_stays_safe() {
     assert!(retries.len() >= 3, "{} retries", retries.len());
     for event in &record.plans {
         assert!(!event.succeeded);
+        // Phases grown per attempt, summed over the levels.
         let phases = if event.trigger == PlanTrigger::Retry {
-            1
+            (levels - 1) + 2
         } else {
-            2
+            levels * 2
         };
         assert_eq!(
             event.samples_drawn,
-            levels * attempts * phases * samples_per_phase,
+            attempts * phases * samples_per_phase,
             "{:?} at {} s",
             event.trigger,
             event.time_s

@@ -24,7 +24,8 @@
 //! the evasive manoeuvre it tries again for a fully compliant plan after
 //! [`RETRY_AFTER_S`], or at once when the encounters in force change; a
 //! retry grows the planner's trees in the first, goal-biased phase only
-//! (`vorrt_planner::SearchEffort::FirstPhase`), since it is one draw of many.
+//! (`vorrt_planner::SearchEffort::FirstPhase`), since it is one draw of many,
+//! except at the last level (safety only), which always searches in full.
 //! Every vessel's state is recorded at every step, and the encounters are
 //! latched from the true states as a bridge officer would.
 

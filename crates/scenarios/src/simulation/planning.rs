@@ -86,8 +86,9 @@ pub(super) struct PlanCall {
 /// fallback, and puts what comes of it in force: the first plan found, or on
 /// failure the previous plan if the planner's validity check still accepts
 /// it, or else the evasive leg (sailed with `model`). A retry searches
-/// with the first phase only ([`SearchEffort::FirstPhase`]): it is one more
-/// draw of many while ownship sails a fallback plan.
+/// with the first phase only ([`SearchEffort::FirstPhase`]) at every level
+/// but the last (safety only): it is one more draw of many while ownship
+/// sails a fallback plan.
 pub(super) fn plan_now(
     planners: &mut [Planner],
     problem: &PlanningProblem,
@@ -102,13 +103,15 @@ pub(super) fn plan_now(
     let mut first_error = None;
     let mut spent = PlanStatistics::default();
     let mut samples_drawn = 0u64;
-    let effort = if call.why == PlanTrigger::Retry {
-        SearchEffort::FirstPhase
-    } else {
-        SearchEffort::Full
-    };
     for planner in planners.iter_mut() {
         let compliance = planner.config().compliance;
+        // A retry's cheaper draw is for compliance: the last level, safety
+        // alone, always searches in full.
+        let effort = if call.why == PlanTrigger::Retry && compliance.relaxed().is_some() {
+            SearchEffort::FirstPhase
+        } else {
+            SearchEffort::Full
+        };
         match planner.plan_with(problem, call.seed, effort) {
             Ok(plan) => {
                 samples_drawn += plan.statistics.samples;
