@@ -8,7 +8,7 @@
 //! Then, for retries: how often a retry finds a fully compliant plan after
 //! `k` failed calls in a row with the same encounters in force, and right
 //! after the encounters changed (the case for or against backing off;
-//! `docs/performance.md`, "2026-11-30: cheaper retries").
+//! `docs/performance.md`, "2026-11-30: cheaper retries, a grid nearest-node index").
 //!
 //! Run with `cargo run --release --example fallback_calls -- BEHAVIOUR COUNT
 //! [TARGETS] [SEED]` (as `vorrt batch --generate open-sea --behaviour
