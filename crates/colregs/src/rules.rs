@@ -384,6 +384,35 @@ pub fn giving_way_to_any<'a>(latches: impl IntoIterator<Item = &'a EncounterLatc
     latches.into_iter().any(|latch| gives_way(latch.encounter))
 }
 
+/// Whether ownship acts for some vessel among the encounters in force, each
+/// given with its range (metres): it gives way to one ([`gives_way`]), or it
+/// stands on for one within the stand-on action range, where it may act on
+/// its own (rule 17(a)(ii), [`within_action_range`]). With several vessels
+/// rule 17(a)(i) yields to such action: a vessel that turns for one vessel
+/// cannot also keep its course for another ([`may_act`]).
+///
+/// ```
+/// use vorrt_colregs::{rules::acting_for_any, Encounter, EncounterLatch, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let stand_on = EncounterLatch::new(Encounter::CrossingStandOn, &own, 0.0);
+/// let give_way = EncounterLatch::new(Encounter::CrossingGiveWay, &own, 0.0);
+/// assert!(acting_for_any([(&give_way, 9000.0)], &params));
+/// assert!(acting_for_any([(&stand_on, 3000.0)], &params)); // within 2 nm
+/// assert!(!acting_for_any([(&stand_on, 9000.0)], &params));
+/// ```
+#[must_use]
+pub fn acting_for_any<'a>(
+    encounters: impl IntoIterator<Item = (&'a EncounterLatch, f64)>,
+    parameters: &RuleParameters,
+) -> bool {
+    encounters.into_iter().any(|(latch, range_m)| {
+        gives_way(latch.encounter)
+            || (latch.encounter.role() == Role::StandOn && within_action_range(range_m, parameters))
+    })
+}
+
 /// Rule 17(a)(ii): whether the range to the give-way vessel is within
 /// [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m), so
 /// that a stand-on vessel may act on her own.
@@ -402,11 +431,11 @@ pub fn within_action_range(range_m: f64, parameters: &RuleParameters) -> bool {
 
 /// Whether ownship, in a stand-on encounter with a target at `range_m`, may
 /// act (manoeuvre): the target is within the stand-on action range (rule
-/// 17(a)(ii), 17(b)), or ownship gives way to some other target
-/// (`giving_way_to_any`, see [`giving_way_to_any`]): with several targets, a
-/// vessel that must give way to one of them cannot also keep its course for
-/// another, so rule 17 yields to the duty to keep out of the way. Rule 17(c)
-/// holds either way.
+/// 17(a)(ii), 17(b)), or ownship acts for some other vessel
+/// (`giving_way_to_any`: see [`acting_for_any`]; it gives way to it, or may
+/// act for it): with several targets, a vessel that must give way to one of
+/// them, or acts for one within the action range, cannot also keep its
+/// course for another, so rule 17 yields. Rule 17(c) holds either way.
 ///
 /// ```
 /// use vorrt_colregs::{rules::may_act, RuleParameters};

@@ -26,7 +26,7 @@
 use crate::config::{Compliance, PlannerConfig};
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::rules::{giving_way_to_any, may_act};
+use vorrt_colregs::rules::{acting_for_any, may_act};
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, Role, VesselState, check_action, check_alteration,
     check_heading, check_motion,
@@ -188,7 +188,7 @@ impl<'a> SafetyChecker<'a> {
         if self.config.compliance == Compliance::SafetyOnly {
             return Ok(());
         }
-        let giving_way = giving_way_to_any(latches.iter().flatten());
+        let giving_way = self.acting_for_any(candidate, latches);
         let motion = self.candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
             let Some(latch) = latches.get(index).copied().flatten() else {
@@ -207,6 +207,24 @@ impl<'a> SafetyChecker<'a> {
             .map_err(RejectionCause::Colregs)?;
         }
         Ok(())
+    }
+
+    /// Whether ownship acts for some vessel at `candidate`'s start
+    /// ([`acting_for_any`]: it gives way to one, or stands on for one within
+    /// the action range).
+    fn acting_for_any(&self, candidate: &Move, latches: &[Option<EncounterLatch>]) -> bool {
+        acting_for_any(
+            self.tracks
+                .iter()
+                .zip(latches)
+                .filter_map(|(track, latch)| {
+                    let range_m = candidate
+                        .start_m
+                        .distance(track.position_at(candidate.start_elapsed_s));
+                    latch.as_ref().map(|latch| (latch, range_m))
+                }),
+            &self.config.rules,
+        )
     }
 
     /// Ownship's motion along `candidate`, as the rule checks see it.
@@ -236,7 +254,7 @@ impl<'a> SafetyChecker<'a> {
         let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
         let to_goal_s = end_m.distance(self.goal_m) / self.ownship.speed_mps;
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
-        let giving_way = giving_way_to_any(latches.iter().flatten());
+        let giving_way = self.acting_for_any(candidate, latches);
         let motion = self.candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
             let target_position = track.position_at(candidate.start_elapsed_s);

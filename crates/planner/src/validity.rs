@@ -24,7 +24,7 @@
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
 use vorrt_colregs::rules::{
-    STEADY_COURSE_WINDOW_S, alteration_made, giving_way_to_any, steady_course_rad,
+    STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_steady};
 use vorrt_jfs::{Leg, LinearTrack};
@@ -66,9 +66,19 @@ impl EncounterState {
         time_s: f64,
         rules: &RuleParameters,
     ) {
-        // Whether ownship was giving way to some vessel up to now: a stand-on
-        // encounter then carries the course it was free to take.
-        let acting_for_others = giving_way_to_any(self.latches.iter().flatten());
+        // Whether ownship was acting for some vessel up to now (giving way,
+        // or free to act within the action range): a stand-on encounter
+        // then carries the course it was free to take.
+        let acting_for_others = acting_for_any(
+            self.latches
+                .iter()
+                .zip(tracks)
+                .filter_map(|(latch, track)| {
+                    let range_m = own_then.position_m.distance(track.position_at(elapsed_s));
+                    latch.as_ref().map(|latch| (latch, range_m))
+                }),
+            rules,
+        );
         for ((latch, altered), track) in self
             .latches
             .iter_mut()

@@ -158,3 +158,26 @@ fn stand_on_keeps_the_course_taken_while_giving_way_to_another() {
             .collect::<Vec<_>>()
     );
 }
+
+/// Imazu problem 20 (three vessels): with an action for one vessel freeing
+/// ownship from rule 17(a)(i) for the others, whether it gives way to it or
+/// stands on for it within the action range (`rules::acting_for_any`), the
+/// first plan holds, fully compliant; before, a fully compliant plan was
+/// found only after 15 planner calls, 12 of them retries.
+#[test]
+fn acting_for_a_near_stand_on_vessel_frees_the_course_for_the_others() {
+    let scenario = fixture("imazu/imazu_20.ron");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(evaluation.reached_goal && evaluation.clearance_kept);
+    assert!(
+        evaluation.compliant,
+        "{:?}",
+        evaluation
+            .targets
+            .iter()
+            .map(|t| &t.violations)
+            .collect::<Vec<_>>()
+    );
+    assert_eq!(record.plans.len(), 1, "one plan, no replanning");
+}

@@ -12,7 +12,7 @@ use crate::compliance::{
 };
 use crate::error::ColregsError;
 use crate::latch::{EncounterLatch, update_latch_steady};
-use crate::rules::{gives_way, in_contact, keeps_clearance};
+use crate::rules::{acting_for_any, in_contact, keeps_clearance};
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -192,9 +192,10 @@ fn observed_states(track: &RecordedTrack, observed: &[OverGround]) -> Vec<Vessel
         .collect()
 }
 
-/// At each sample, whether ownship gave way to some target then (an encounter
-/// in force, latched on the observed states, in which it gives way): while it
-/// does, it may act for the vessels it stands on for ([`crate::rules::may_act`]).
+/// At each sample, whether ownship acted for some target then (an encounter
+/// in force, latched on the observed states, in which it gives way, or
+/// stands on within the action range: [`acting_for_any`]): while it does, it
+/// may act for the vessels it stands on for ([`crate::rules::may_act`]).
 fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParameters) -> Vec<bool> {
     let count = samples.first().map_or(0, Vec::len);
     let mut giving_way = vec![false; count];
@@ -214,7 +215,9 @@ fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParamete
                 sample.time_s,
                 &parameters.rules,
             );
-            *giving |= latch.is_some_and(|latch| gives_way(latch.encounter));
+            *giving |= latch.is_some_and(|latch| {
+                acting_for_any([(&latch, sample.range_m())], &parameters.rules)
+            });
         }
     }
     giving_way

@@ -33,7 +33,7 @@ use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
-use vorrt_colregs::rules::{alteration_made, giving_way_to_any};
+use vorrt_colregs::rules::{acting_for_any, alteration_made};
 use vorrt_colregs::{EncounterLatch, VesselState, update_latch_steady};
 use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn, TargetState};
 use vorrt_planner::{
@@ -364,7 +364,13 @@ pub fn simulate_with(
         let steady_course_rad =
             steady_course_rad(&record.times_s, &own_courses_rad, STEADY_COURSE_WINDOW_S)
                 .unwrap_or(own.course_rad);
-        let acting_for_others = giving_way_to_any(latches.iter().flatten());
+        let acting_for_others = acting_for_any(
+            latches.iter().zip(&targets).filter_map(|(latch, target)| {
+                let range_m = own.range_to(&target.state.vessel);
+                latch.as_ref().map(|latch| (latch, range_m))
+            }),
+            &config.rules,
+        );
         for ((latch, altered), target) in latches.iter_mut().zip(&mut alterations).zip(&targets) {
             let before = *latch;
             *latch = update_latch_steady(
