@@ -74,6 +74,16 @@ of turn (the largest column), with the reversals and course change per
 nautical mile above, and judged by the stricter evaluation of
 `docs/evaluation.md` (\"Judging the track as observed\").
 
+The first version judged as observed (2026-11-30, commit 454013a) had 23 of 27
+scenarios without finding: imazu_11 (rule 17(c)), imazu_13 (a stand-on course
+change), imazu_17 (a 30° alteration for an overtaken vessel not seen as
+readily apparent) and imazu_19 (small alterations). The steady course of a
+new encounter, turns sailed through the heading rules, the stand-on course
+kept with several vessels and acting for one vessel freeing ownship for the
+others (`docs/architecture.md`, decisions 20-22) leave imazu_13 alone, where
+ownship must keep its course for two vessels crossing from port, one of them
+converging on nearly the same course, until it may act.
+
 ## Reading the table
 
 - **Minimum distances** are between reference points, exact between the 5 s
