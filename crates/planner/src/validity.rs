@@ -158,10 +158,11 @@ impl MotionValidator for SafetyChecker<'_> {
         // the course held before that turn (the closed loop's history);
         // otherwise the leg's own start course (a turn between legs begins
         // with the next leg).
-        let (before_s, before_course_rad) = if start_elapsed_s <= 0.0 {
-            (start_elapsed_s - 1e-3, self.steady_course_rad)
+        let before_s = start_elapsed_s - 1e-3;
+        let before_course_rad = if start_elapsed_s <= 0.0 {
+            self.steady_course_rad
         } else {
-            (start_elapsed_s - 1e-3, leg.start_course_rad)
+            leg.start_course_rad
         };
         for piece in leg.pieces(self.config.step_m) {
             let candidate = Move {
@@ -189,32 +190,27 @@ impl MotionValidator for SafetyChecker<'_> {
                 self.check(&candidate, &state.latches, &state.alterations)?;
             }
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
-            let (course_rad, steady_course_rad) = if piece.turning {
-                // Heading at the chord's end; the course before the turn is
-                // still the steady one while the turn is under way.
-                let heading_rad = leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad;
-                let steady = steady_course_rad(
-                    &[before_s, start_elapsed_s, end_elapsed_s],
-                    &[before_course_rad, leg.start_course_rad, heading_rad],
-                    STEADY_COURSE_WINDOW_S,
-                );
-                (heading_rad, steady.unwrap_or(heading_rad))
+            // The heading at the piece's end (on a turn, part way round), and
+            // the course an observer still sees steady: the one before this
+            // leg's turn (or, on a plan's first leg, before the turn it
+            // starts in) while that turn is within the window.
+            let course_rad = if piece.turning {
+                leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad
             } else {
-                // The course an observer still sees steady: before this
-                // leg's turn while the turn is within the window.
-                let turn_end_s = start_elapsed_s + leg.turn_duration_s();
-                let steady = steady_course_rad(
-                    &[before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
-                    &[
-                        before_course_rad,
-                        leg.start_course_rad,
-                        leg.course_rad,
-                        leg.course_rad,
-                    ],
-                    STEADY_COURSE_WINDOW_S,
-                );
-                (piece.course_rad, steady.unwrap_or(piece.course_rad))
+                piece.course_rad
             };
+            let turn_end_s = (start_elapsed_s + leg.turn_duration_s()).min(end_elapsed_s);
+            let steady_course_rad = steady_course_rad(
+                &[before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
+                &[
+                    before_course_rad,
+                    leg.start_course_rad,
+                    course_rad,
+                    course_rad,
+                ],
+                STEADY_COURSE_WINDOW_S,
+            )
+            .unwrap_or(course_rad);
             let own_then = VesselState {
                 position_m: piece.end_m(),
                 course_rad,
