@@ -8,7 +8,7 @@
 //!
 //! | module | what it gives |
 //! |---|---|
-//! | [`prediction`] | [`TargetState`]: constant course and speed, or steer for a goal and stop there; closed-form [`TargetState::predict`] and [`LinearTrack`] |
+//! | [`prediction`] | [`TargetState`]: constant course and speed, steer for a goal and stop there, or hold the course first and then steer for the goal; closed-form [`TargetState::predict`] and [`LinearTrack`] |
 //! | [`motion`] | [`MotionModel`]: ownship's motion from a pose toward a point as a [`Leg`] (turn, then straight, with a speed profile: [`Leg::from_speed`]); [`InstantTurn`] (the paper's step) and [`RateLimitedTurn`] (arcs at a bounded rate of turn) |
 //! | [`joint_state`] | [`JointState`] (every vessel at one time), [`step_ownship`] and [`JointState::step_toward`]: the paper's JFS step |
 //! | [`error`] | [`JfsError`] |

@@ -1,10 +1,12 @@
 //! Predicting where a target will be (notes, erratum 9).
 //!
 //! A target either holds its course and speed for ever, or steers straight for
-//! its goal at constant speed and stops there. Both predictions are in closed
-//! form and memoryless: predicting `a + b` seconds ahead equals predicting `a`
-//! and then `b`, so a planner may keep only the targets' states at its root and
-//! predict them at any node's time.
+//! its goal at constant speed and stops there, or holds its present course for
+//! a while and then steers for its goal (a give-way vessel holding its
+//! alteration until it is past, rule 8(d), then returning to its route). All
+//! three predictions are in closed form and memoryless: predicting `a + b`
+//! seconds ahead equals predicting `a` and then `b`, so a planner may keep only
+//! the targets' states at its root and predict them at any node's time.
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -18,6 +20,11 @@ pub struct TargetState {
     pub vessel: VesselState,
     /// Where it is bound, metres; `None` holds course and speed for ever.
     pub goal_m: Option<DVec2>,
+    /// With a goal: seconds it holds its present course and speed before it
+    /// steers for the goal (a vessel holding an alteration until it is past
+    /// and clear, rule 8(d)); `None` steers for the goal at once.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub holds_course_for_s: Option<f64>,
 }
 
 impl TargetState {
@@ -27,6 +34,7 @@ impl TargetState {
         Self {
             vessel,
             goal_m: None,
+            holds_course_for_s: None,
         }
     }
 
@@ -42,6 +50,53 @@ impl TargetState {
         Self {
             vessel,
             goal_m: Some(goal_m),
+            holds_course_for_s: None,
+        }
+    }
+
+    /// A target that holds its present course and speed for `hold_s`
+    /// seconds, then steers for `goal_m` at the same speed: a vessel seen
+    /// off the course to its destination, giving way, that returns to its
+    /// route once past. A non-positive (or NaN) `hold_s` steers for the goal
+    /// at once ([`toward_goal`](Self::toward_goal)).
+    ///
+    /// ```
+    /// use vorrt_jfs::TargetState;
+    /// use vorrt_colregs::VesselState;
+    /// use glam::DVec2;
+    /// // Heading east at 5 m/s for 100 s, then north to (500, 1000).
+    /// let target = TargetState::holding_course_then_toward_goal(
+    ///     VesselState::new(DVec2::ZERO, std::f64::consts::FRAC_PI_2, 5.0, 50.0),
+    ///     DVec2::new(500.0, 1000.0),
+    ///     100.0,
+    /// );
+    /// assert!(target.predict(100.0).vessel.position_m.distance(DVec2::new(500.0, 0.0)) < 1e-9);
+    /// assert!(target.predict(200.0).vessel.position_m.distance(DVec2::new(500.0, 500.0)) < 1e-9);
+    /// assert_eq!(target.time_to_goal_s(), Some(300.0));
+    /// ```
+    #[must_use]
+    pub fn holding_course_then_toward_goal(
+        vessel: VesselState,
+        goal_m: DVec2,
+        hold_s: f64,
+    ) -> Self {
+        if hold_s > 0.0 {
+            Self {
+                vessel,
+                goal_m: Some(goal_m),
+                holds_course_for_s: Some(hold_s),
+            }
+        } else {
+            Self::toward_goal(vessel, goal_m)
+        }
+    }
+
+    /// Seconds it still holds its present course before it steers for its
+    /// goal (zero without a goal or a hold).
+    fn hold_s(&self) -> f64 {
+        match (self.goal_m, self.holds_course_for_s) {
+            (Some(_), Some(hold_s)) if hold_s > 0.0 => hold_s,
+            _ => 0.0,
         }
     }
 
@@ -50,6 +105,14 @@ impl TargetState {
     #[must_use]
     pub fn time_to_goal_s(&self) -> Option<f64> {
         let goal = self.goal_m?;
+        let hold_s = self.hold_s();
+        if hold_s > 0.0 {
+            if self.vessel.speed_mps <= 0.0 {
+                return None;
+            }
+            let turned = self.vessel.advanced(hold_s).position_m;
+            return Some(hold_s + turned.distance(goal) / self.vessel.speed_mps);
+        }
         let distance = self.vessel.position_m.distance(goal);
         if distance == 0.0 {
             Some(0.0)
@@ -69,8 +132,9 @@ impl TargetState {
 
     /// The state `duration_s` seconds on (closed form). A goal-bound target
     /// moves along the straight line to its goal at its speed, never past it,
-    /// and once there stops (speed 0, last course kept). Negative durations
-    /// are treated as zero.
+    /// and once there stops (speed 0, last course kept); one that holds its
+    /// course first sails on it for its hold, then does the same. Negative
+    /// durations are treated as zero.
     ///
     /// ```
     /// use vorrt_jfs::TargetState;
@@ -90,8 +154,25 @@ impl TargetState {
             return TargetState {
                 vessel: self.vessel.advanced(duration_s),
                 goal_m: None,
+                holds_course_for_s: None,
             };
         };
+        let hold_s = self.hold_s();
+        if hold_s > 0.0 {
+            if duration_s < hold_s {
+                return TargetState {
+                    vessel: self.vessel.advanced(duration_s),
+                    goal_m: self.goal_m,
+                    holds_course_for_s: Some(hold_s - duration_s),
+                };
+            }
+            let turned = TargetState {
+                vessel: self.vessel.advanced(hold_s),
+                goal_m: self.goal_m,
+                holds_course_for_s: None,
+            };
+            return turned.predict(duration_s - hold_s);
+        }
         let to_goal = goal - self.vessel.position_m;
         let remaining_m = to_goal.length();
         let travel_m = self.vessel.speed_mps * duration_s;
@@ -109,14 +190,17 @@ impl TargetState {
         TargetState {
             vessel,
             goal_m: self.goal_m,
+            holds_course_for_s: None,
         }
     }
 }
 
-/// A target's predicted motion in closed form: constant velocity from
-/// `start_m` for `moving_for_s` seconds (for ever without a goal), then at rest.
-/// The same motion as [`TargetState::predict`], precomputed so that a planner
-/// evaluates it with a multiply-add.
+/// A target's predicted motion in closed form: from `start_m` at
+/// `velocity_mps` until `turns_at_s`, then at `then_velocity_mps` until
+/// `moving_for_s` (for ever without a goal), then at rest. The same motion as
+/// [`TargetState::predict`], precomputed so that a planner evaluates it with a
+/// multiply-add. A target that steers for its goal at once has one leg
+/// (`turns_at_s == moving_for_s`).
 ///
 /// ```
 /// use vorrt_jfs::TargetState;
@@ -133,8 +217,13 @@ impl TargetState {
 pub struct LinearTrack {
     /// Position at the track's time zero, metres.
     pub start_m: DVec2,
-    /// Velocity while moving, m/s.
+    /// Velocity on the first leg, m/s.
     pub velocity_mps: DVec2,
+    /// When the first leg ends and the second begins, seconds after time
+    /// zero (`moving_for_s` when there is one leg).
+    pub turns_at_s: f64,
+    /// Velocity on the second leg, m/s (`velocity_mps` when there is one leg).
+    pub then_velocity_mps: DVec2,
     /// How long it moves before it stops, seconds (`f64::INFINITY` without a goal).
     pub moving_for_s: f64,
     /// The vessel at time zero (course, speed and length).
@@ -147,27 +236,46 @@ impl LinearTrack {
     #[must_use]
     pub fn position_at(&self, elapsed_s: f64) -> DVec2 {
         let moving_s = elapsed_s.clamp(0.0, self.moving_for_s);
-        self.start_m + self.velocity_mps * moving_s
+        if moving_s <= self.turns_at_s {
+            self.start_m + self.velocity_mps * moving_s
+        } else {
+            self.start_m
+                + self.velocity_mps * self.turns_at_s
+                + self.then_velocity_mps * (moving_s - self.turns_at_s)
+        }
     }
 
     /// Velocity `elapsed_s` after time zero: zero once it has stopped.
     #[inline]
     #[must_use]
     pub fn velocity_at(&self, elapsed_s: f64) -> DVec2 {
-        if elapsed_s < self.moving_for_s {
+        if elapsed_s < self.turns_at_s {
             self.velocity_mps
+        } else if elapsed_s < self.moving_for_s {
+            self.then_velocity_mps
         } else {
             DVec2::ZERO
         }
     }
 
-    /// The full vessel state `elapsed_s` after time zero.
+    /// The full vessel state `elapsed_s` after time zero: on the second leg
+    /// it has the second leg's course; once stopped, speed 0 and the last
+    /// course kept.
     #[must_use]
     pub fn state_at(&self, elapsed_s: f64) -> VesselState {
         let moving = elapsed_s < self.moving_for_s;
+        let course_rad = if elapsed_s >= self.turns_at_s
+            && self.turns_at_s < self.moving_for_s
+            && self.then_velocity_mps != DVec2::ZERO
+        {
+            angle::unit_to_course(self.then_velocity_mps)
+        } else {
+            self.vessel.course_rad
+        };
         VesselState {
             position_m: self.position_at(elapsed_s),
             speed_mps: if moving { self.vessel.speed_mps } else { 0.0 },
+            course_rad,
             ..self.vessel
         }
     }
@@ -177,6 +285,26 @@ impl TargetState {
     /// This target's motion as a [`LinearTrack`] starting now.
     #[must_use]
     pub fn track(&self) -> LinearTrack {
+        let hold_s = self.hold_s();
+        if hold_s > 0.0 {
+            // Its present course first, then the line from where the hold
+            // ends to the goal.
+            let turned = self.predict(hold_s);
+            let second = turned.track();
+            let moving_for_s = hold_s + second.moving_for_s;
+            return LinearTrack {
+                start_m: self.vessel.position_m,
+                velocity_mps: self.vessel.velocity_mps(),
+                turns_at_s: if moving_for_s > hold_s {
+                    hold_s
+                } else {
+                    moving_for_s
+                },
+                then_velocity_mps: second.velocity_mps,
+                moving_for_s,
+                vessel: self.vessel,
+            };
+        }
         let mut vessel = self.vessel;
         let moving_for_s = match self.goal_m {
             None => f64::INFINITY,
@@ -196,6 +324,8 @@ impl TargetState {
         LinearTrack {
             start_m: vessel.position_m,
             velocity_mps,
+            turns_at_s: moving_for_s,
+            then_velocity_mps: velocity_mps,
             moving_for_s,
             vessel,
         }
@@ -237,5 +367,55 @@ mod tests {
         );
         assert_eq!(target.time_to_goal_s(), None);
         assert_eq!(target.predict(50.0).vessel.position_m, DVec2::ZERO);
+    }
+
+    #[test]
+    fn holding_target_turns_for_its_goal_after_its_hold() {
+        // East at 5 m/s for 100 s, then north for (500, 1000): 1000 m more.
+        let target = TargetState::holding_course_then_toward_goal(
+            VesselState::new(DVec2::ZERO, std::f64::consts::FRAC_PI_2, 5.0, 50.0),
+            DVec2::new(500.0, 1000.0),
+            100.0,
+        );
+        let track = target.track();
+        assert_eq!(track.turns_at_s, 100.0);
+        assert!((track.moving_for_s - 300.0).abs() < 1e-9);
+        for elapsed_s in [0.0, 50.0, 100.0, 150.0, 299.0, 300.0, 400.0] {
+            let predicted = target.predict(elapsed_s);
+            assert!(
+                track
+                    .position_at(elapsed_s)
+                    .distance(predicted.vessel.position_m)
+                    < 1e-9,
+                "{elapsed_s}"
+            );
+            let state = track.state_at(elapsed_s);
+            assert!(
+                (state.course_rad - predicted.vessel.course_rad).abs() < 1e-9,
+                "{elapsed_s}"
+            );
+        }
+        assert!((track.velocity_at(150.0) - DVec2::new(0.0, 5.0)).length() < 1e-9);
+        assert_eq!(track.velocity_at(300.0), DVec2::ZERO);
+        // Memoryless across the turn.
+        let in_two = target.predict(60.0).predict(90.0);
+        assert!(
+            in_two
+                .vessel
+                .position_m
+                .distance(target.predict(150.0).vessel.position_m)
+                < 1e-9
+        );
+        assert_eq!(in_two.holds_course_for_s, None);
+    }
+
+    #[test]
+    fn a_hold_of_zero_steers_for_the_goal_at_once() {
+        let vessel = VesselState::new(DVec2::ZERO, 1.0, 5.0, 50.0);
+        let goal = DVec2::new(0.0, 1000.0);
+        assert_eq!(
+            TargetState::holding_course_then_toward_goal(vessel, goal, 0.0),
+            TargetState::toward_goal(vessel, goal)
+        );
     }
 }

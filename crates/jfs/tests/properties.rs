@@ -26,11 +26,15 @@ fn vessel() -> impl Strategy<Value = VesselState> {
         .prop_map(|(position, course, speed)| VesselState::new(position, course, speed, LENGTH_M))
 }
 
-/// A target that holds course and speed, or one bound for a goal.
+/// A target that holds course and speed, one bound for a goal, or one that
+/// holds its course for a while and then steers for its goal.
 fn target() -> impl Strategy<Value = TargetState> {
     prop_oneof![
         vessel().prop_map(TargetState::constant_velocity),
         (vessel(), position()).prop_map(|(vessel, goal)| TargetState::toward_goal(vessel, goal)),
+        (vessel(), position(), duration()).prop_map(|(vessel, goal, hold_s)| {
+            TargetState::holding_course_then_toward_goal(vessel, goal, hold_s)
+        }),
     ]
 }
 

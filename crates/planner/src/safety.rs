@@ -37,7 +37,9 @@ use vorrt_jfs::LinearTrack;
 
 /// The smallest distance between ownship, leaving `start_m` with
 /// `velocity_mps`, and a target on `track`, over `duration_s` seconds starting
-/// `track_elapsed_s` after the track's time zero. The target may stop part way.
+/// `track_elapsed_s` after the track's time zero. The target may turn onto
+/// its second leg, or stop, part way: each piece of constant target velocity
+/// is one closest-point-of-approach test.
 #[must_use]
 pub fn min_distance_over(
     start_m: DVec2,
@@ -46,24 +48,26 @@ pub fn min_distance_over(
     track_elapsed_s: f64,
     duration_s: f64,
 ) -> f64 {
-    let moving_s = (track.moving_for_s - track_elapsed_s).clamp(0.0, duration_s);
-    let target_start = track.position_at(track_elapsed_s);
+    // Seconds into the interval at which the target turns, and stops.
+    let turns_s = (track.turns_at_s - track_elapsed_s).clamp(0.0, duration_s);
+    let stops_s = (track.moving_for_s - track_elapsed_s).clamp(0.0, duration_s);
     let mut best = f64::INFINITY;
-    if moving_s > 0.0 {
-        let cpa = cpa_clamped(
-            start_m - target_start,
-            velocity_mps - track.velocity_mps,
-            moving_s,
-        );
-        best = cpa.distance_m;
-    }
-    if moving_s < duration_s {
-        // The target is at rest for the rest of the interval.
-        let own_then = start_m + velocity_mps * moving_s;
-        let target_then = track.position_at(track_elapsed_s + moving_s);
-        let cpa = cpa_clamped(own_then - target_then, velocity_mps, duration_s - moving_s);
-        best = best.min(cpa.distance_m);
-    }
+    let mut piece = |from_s: f64, to_s: f64, target_velocity_mps: DVec2| {
+        if to_s > from_s {
+            let own_then = start_m + velocity_mps * from_s;
+            let target_then = track.position_at(track_elapsed_s + from_s);
+            let cpa = cpa_clamped(
+                own_then - target_then,
+                velocity_mps - target_velocity_mps,
+                to_s - from_s,
+            );
+            best = best.min(cpa.distance_m);
+        }
+    };
+    piece(0.0, turns_s, track.velocity_mps);
+    piece(turns_s, stops_s, track.then_velocity_mps);
+    // The target is at rest for the rest of the interval.
+    piece(stops_s, duration_s, DVec2::ZERO);
     best
 }
 
@@ -373,5 +377,26 @@ mod tests {
             20.0,
         );
         assert!((distance - 50.0).abs() < 1e-9, "{distance}");
+    }
+
+    #[test]
+    fn a_turning_target_is_checked_on_both_legs() {
+        // East from the origin at 10 m/s for 10 s, then north for (100, 1000).
+        let track = TargetState::holding_course_then_toward_goal(
+            VesselState::new(DVec2::ZERO, std::f64::consts::FRAC_PI_2, 10.0, 10.0),
+            DVec2::new(100.0, 1000.0),
+            10.0,
+        )
+        .track();
+        // Ownship lies still at (100, 300): the target's second leg runs over it
+        // at t = 40 s, while its first leg alone passes 300 m off.
+        let distance = min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 0.0, 60.0);
+        assert!(distance < 1e-9, "{distance}");
+        let first_leg_only =
+            min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 0.0, 10.0);
+        assert!((first_leg_only - 300.0).abs() < 1e-9, "{first_leg_only}");
+        // From 20 s into the track: the second leg only.
+        let later = min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 20.0, 30.0);
+        assert!(later < 1e-9, "{later}");
     }
 }

@@ -66,3 +66,46 @@ fn evasive_manoeuvre_is_held_while_overtaken_by_a_wandering_vessel() {
         evaluation.min_distance_m
     );
 }
+
+/// Run 283 of the campaign with 8 COLREGs-obeying targets (seed 11): TS5
+/// overtakes ownship on its avoiding course, 35° to starboard, and once
+/// past steers back for its destination across ownship's bow. Predicted on
+/// its avoiding course for ever, it came within 198 m of ownship (d_th
+/// broken between the hulls); predicted to return to its route once past
+/// (`holding_course_then_toward_goal`), it is kept clear of.
+#[test]
+fn an_overtaking_vessel_returning_to_its_route_is_foreseen() {
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 283).expect("generated");
+    let record = simulate(&scenario, 14_356_413_915_108_752_105).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        evaluation.clearance_kept,
+        "{:.1} m between reference points",
+        evaluation.min_distance_m
+    );
+    assert!(evaluation.reached_goal);
+}
+
+/// Run 511 of the campaign with 16 COLREGs-obeying targets (seed 11), the one
+/// run of its 1000 that ended in hull contact: a vessel from the quarter on
+/// nearly the same course, overtaking, while most replans failed. With the
+/// overtaking vessels' return to their routes foreseen, every plan succeeds
+/// and d_th is kept.
+#[test]
+fn sixteen_acting_vessels_of_run_511_are_kept_clear_of() {
+    let spec = OpenSeaSpec::with_targets(16).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 511).expect("generated");
+    let record = simulate(&scenario, 1_326_621_031_047_636_798).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        !evaluation.collision,
+        "contact at {:.1} m",
+        evaluation.min_distance_m
+    );
+    assert!(
+        evaluation.clearance_kept,
+        "{:.1} m",
+        evaluation.min_distance_m
+    );
+}

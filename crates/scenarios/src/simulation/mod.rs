@@ -410,8 +410,13 @@ pub fn simulate_with(
             trigger = Some(PlanTrigger::Retry);
         }
         if let Some(why) = trigger.take() {
-            let predicted: Vec<TargetState> =
-                targets.iter().map(SimulatedTarget::announced).collect();
+            let predicted: Vec<TargetState> = targets
+                .iter()
+                .zip(&latches)
+                .map(|(target, latch)| {
+                    target.announced(&own, latch.map(|latch| latch.encounter), &config.rules)
+                })
+                .collect();
             let problem = PlanningProblem {
                 start_time_s: time_s,
                 ownship: own,

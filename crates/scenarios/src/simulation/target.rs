@@ -5,7 +5,9 @@ use super::OBSERVED_TURN_RAD;
 use crate::scenario::{Behaviour, COLREGS_TURN_DEG, NOISE_TIME_CONSTANT_S};
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};
-use vorrt_colregs::{EncounterLatch, Role, RuleParameters, VesselState, update_latch};
+use vorrt_colregs::{
+    Encounter, EncounterLatch, Role, RuleParameters, VesselState, has_passed, update_latch,
+};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::TargetState;
@@ -165,20 +167,28 @@ impl SimulatedTarget {
         }
     }
 
-    /// How ownship predicts the target: from what it broadcasts (AIS: course,
-    /// speed, destination) and what it is seen doing. A goal-bound target is
+    /// How ownship (`own`, with `encounter` latched against this target, if
+    /// any) predicts the target: from what it broadcasts (AIS: course, speed,
+    /// destination) and what it is seen doing. A goal-bound target is
     /// predicted steering for its goal at its nominal speed, unless it is
     /// seen more than [`OBSERVED_TURN_RAD`] off that course: then it is
-    /// predicted holding the course it is on. Any other target holds its
-    /// course at its nominal speed (its present course and speed for the
-    /// constant-motion behaviours).
-    pub(super) fn announced(&self) -> TargetState {
+    /// predicted holding the course it is on until it has passed ownship
+    /// ([`passing_time_s`]), and then steering for its goal again. Any
+    /// other target holds its course at its nominal speed (its present
+    /// course and speed for the constant-motion behaviours).
+    pub(super) fn announced(
+        &self,
+        own: &VesselState,
+        encounter: Option<Encounter>,
+        rules: &RuleParameters,
+    ) -> TargetState {
         let vessel = self.state.vessel;
         match self.behaviour {
             Behaviour::ConstantToGoal | Behaviour::ConstantVelocity => match self.state.goal_m {
                 Some(goal) => TargetState {
                     vessel,
                     goal_m: Some(goal),
+                    holds_course_for_s: None,
                 },
                 None => TargetState::constant_velocity(vessel),
             },
@@ -186,7 +196,8 @@ impl SimulatedTarget {
                 // A turn seen over ground updates the prediction: a target
                 // well off the course to its destination is predicted to hold
                 // the course it is seen on (it is giving way, or has changed
-                // its mind), as AIS and radar show it.
+                // its mind), as AIS and radar show it, until it is past
+                // ownship (rule 8(d)), and then to return to its route.
                 Some(goal)
                     if !self.state.has_arrived()
                         && signed_turn(
@@ -196,10 +207,19 @@ impl SimulatedTarget {
                         .abs()
                             > OBSERVED_TURN_RAD =>
                 {
-                    TargetState::constant_velocity(VesselState {
+                    let seen = VesselState {
                         speed_mps: self.nominal_speed_mps,
                         ..vessel
-                    })
+                    };
+                    let returns_after_s = (encounter == Some(Encounter::BeingOvertaken))
+                        .then(|| passing_time_s(own, &seen, encounter, rules))
+                        .flatten();
+                    match returns_after_s {
+                        Some(hold_s) => {
+                            TargetState::holding_course_then_toward_goal(seen, goal, hold_s)
+                        }
+                        None => TargetState::constant_velocity(seen),
+                    }
                 }
                 Some(goal) => {
                     let speed_mps = if self.state.has_arrived() {
@@ -223,5 +243,91 @@ impl SimulatedTarget {
                 }),
             },
         }
+    }
+}
+
+/// How far ahead a target off its route is followed to the moment it has
+/// passed ownship, seconds (beyond it, it is predicted on its course for ever).
+pub(super) const PASSING_HORIZON_S: f64 = 300.0;
+
+/// The step of that search, seconds.
+const PASSING_STEP_S: f64 = 5.0;
+
+/// Seconds until `target` has passed `own`, both holding their course and
+/// speed: as the rules judge passing ([`has_passed`], with the `encounter`
+/// between them; a crossing when none is latched), and, in an overtaking,
+/// with the overtaking vessel forward of the other's beam — the moment a
+/// vessel that holds its alteration "until the other vessel is finally past
+/// and clear" (rule 8(d)) is free to return to its route. `None` when they
+/// have not passed within [`PASSING_HORIZON_S`] (an overtaking vessel that
+/// falls back on its avoiding course never gets past).
+pub(super) fn passing_time_s(
+    own: &VesselState,
+    target: &VesselState,
+    encounter: Option<Encounter>,
+    rules: &RuleParameters,
+) -> Option<f64> {
+    let encounter = encounter.unwrap_or(Encounter::CrossingGiveWay);
+    // Whether `ahead` is forward of `astern`'s beam.
+    let forward_of_beam = |ahead: &VesselState, astern: &VesselState| {
+        (ahead.position_m - astern.position_m).dot(astern.velocity_mps()) > 0.0
+    };
+    let steps = (PASSING_HORIZON_S / PASSING_STEP_S) as usize;
+    (0..=steps)
+        .map(|step| step as f64 * PASSING_STEP_S)
+        .find(|&elapsed_s| {
+            let (own, target) = (own.advanced(elapsed_s), target.advanced(elapsed_s));
+            let overtaken = match encounter {
+                Encounter::BeingOvertaken => forward_of_beam(&target, &own),
+                Encounter::Overtaking => forward_of_beam(&own, &target),
+                _ => true,
+            };
+            overtaken && has_passed(&own, &target, encounter, rules)
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use vorrt_geometry::DVec2;
+
+    fn vessel(x_m: f64, y_m: f64, course_deg: f64, speed_mps: f64) -> VesselState {
+        VesselState::new(
+            DVec2::new(x_m, y_m),
+            course_deg.to_radians(),
+            speed_mps,
+            100.0,
+        )
+    }
+
+    #[test]
+    fn an_overtaking_vessel_has_passed_once_forward_of_the_beam_and_clear() {
+        let rules = RuleParameters::default();
+        // Ownship north at 5 m/s; a vessel 500 m astern, 300 m to starboard,
+        // 10 m/s on nearly the same course: it comes up, passes and draws
+        // ahead (abeam after about 100 s).
+        let own = vessel(0.0, 0.0, 0.0, 5.0);
+        let overtaking = vessel(300.0, -500.0, 5.0, 10.0);
+        let passed_s = passing_time_s(&own, &overtaking, Some(Encounter::BeingOvertaken), &rules)
+            .expect("passes within the horizon");
+        let (own_then, target_then) = (own.advanced(passed_s), overtaking.advanced(passed_s));
+        assert!(
+            target_then.position_m.y > own_then.position_m.y,
+            "forward of the beam"
+        );
+        assert!(has_passed(
+            &own_then,
+            &target_then,
+            Encounter::BeingOvertaken,
+            &rules
+        ));
+        assert!((90.0..=PASSING_HORIZON_S).contains(&passed_s), "{passed_s}");
+        // Turned away so far that it falls back: the range opens, yet it
+        // never gets past, and it is predicted on its course for ever.
+        let falling_back = vessel(300.0, -500.0, 70.0, 10.0);
+        assert_eq!(
+            passing_time_s(&own, &falling_back, Some(Encounter::BeingOvertaken), &rules),
+            None
+        );
     }
 }
