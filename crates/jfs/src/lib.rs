@@ -25,4 +25,4 @@ pub use motion::{
     InstantTurn, Leg, MotionModel, OwnshipModel, Piece, Pose, RateLimitedTurn, SpeedChange,
     default_speed_change_mps2, default_turn_rate_rad_s,
 };
-pub use prediction::{LinearTrack, TargetState};
+pub use prediction::{LinearTrack, TURN_TIMING_UNCERTAINTY_S, TargetState};

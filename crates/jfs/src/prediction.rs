@@ -13,6 +13,14 @@ use serde::{Deserialize, Serialize};
 use vorrt_colregs::VesselState;
 use vorrt_geometry::angle;
 
+/// How well the moment a target turns onto the second leg of its
+/// prediction is known, seconds: a vessel returning to its route once past
+/// turns when it judges itself past, which an observer estimates from both
+/// vessels' present motion, to within this. The second leg is kept as much
+/// farther off as the target sails in this time
+/// ([`LinearTrack::then_margin_m`]).
+pub const TURN_TIMING_UNCERTAINTY_S: f64 = 10.0;
+
 /// A target vessel: its state and, when it has one, the goal it steers for.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TargetState {
@@ -224,6 +232,9 @@ pub struct LinearTrack {
     pub turns_at_s: f64,
     /// Velocity on the second leg, m/s (`velocity_mps` when there is one leg).
     pub then_velocity_mps: DVec2,
+    /// How much nearer than the second leg the target may be, metres: its
+    /// speed times [`TURN_TIMING_UNCERTAINTY_S`] (0 when there is one leg).
+    pub then_margin_m: f64,
     /// How long it moves before it stops, seconds (`f64::INFINITY` without a goal).
     pub moving_for_s: f64,
     /// The vessel at time zero (course, speed and length).
@@ -301,6 +312,7 @@ impl TargetState {
                     moving_for_s
                 },
                 then_velocity_mps: second.velocity_mps,
+                then_margin_m: self.vessel.speed_mps * TURN_TIMING_UNCERTAINTY_S,
                 moving_for_s,
                 vessel: self.vessel,
             };
@@ -326,6 +338,7 @@ impl TargetState {
             velocity_mps,
             turns_at_s: moving_for_s,
             then_velocity_mps: velocity_mps,
+            then_margin_m: 0.0,
             moving_for_s,
             vessel,
         }

@@ -9,7 +9,7 @@
 //! room (`docs/evaluation.md`).
 
 use proptest::prelude::*;
-use vorrt_scenarios::{OpenSeaSpec, TargetBehaviour, evaluate, simulate};
+use vorrt_scenarios::{OpenSeaSpec, PlanTrigger, TargetBehaviour, evaluate, simulate};
 
 fn cases() -> u32 {
     if std::env::var("VORRT_HEAVY_TESTS").is_ok_and(|value| value == "1") {
@@ -85,6 +85,31 @@ fn an_overtaking_vessel_returning_to_its_route_is_foreseen() {
         evaluation.min_distance_m
     );
     assert!(evaluation.reached_goal);
+}
+
+/// Run 243 of the same campaign: TS4 overtakes while ownship gives way to
+/// another vessel; its return to its route comes within the prediction's
+/// horizon only minutes after the last plan, with no other reason to plan
+/// again. The prediction changing asks whether the plan still holds
+/// (`PlanTrigger::PredictionChanged`), and ownship keeps clear of the return.
+#[test]
+fn a_return_foreseen_after_the_last_plan_is_planned_for() {
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 243).expect("generated");
+    let record = simulate(&scenario, 8_970_548_677_156_690_869).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        record
+            .plans
+            .iter()
+            .any(|event| event.trigger == PlanTrigger::PredictionChanged { target: 3 }),
+        "the plan was made again for TS4's return"
+    );
+    assert!(
+        evaluation.clearance_kept,
+        "{:.1} m between reference points",
+        evaluation.min_distance_m
+    );
 }
 
 /// Run 511 of the campaign with 16 COLREGs-obeying targets (seed 11), the one

@@ -66,6 +66,12 @@ pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
 /// change first.
 pub const RETRY_AFTER_S: f64 = 20.0;
 
+/// A target's predicted return to its route that moves by more than this
+/// from the one the plan in force assumed asks whether that plan still
+/// holds, seconds: the uncertainty its prediction allows for
+/// (`vorrt_jfs::TURN_TIMING_UNCERTAINTY_S`).
+pub const RETURN_MOVED_S: f64 = vorrt_jfs::TURN_TIMING_UNCERTAINTY_S;
+
 /// How far ahead the evasive course is judged, seconds.
 pub const EVASION_HORIZON_S: f64 = 600.0;
 
@@ -85,6 +91,13 @@ pub enum PlanTrigger {
     },
     /// An encounter arose that the plan did not foresee (none, or another type).
     NewEncounter {
+        /// Index of the target.
+        target: usize,
+    },
+    /// A target's predicted return to its route (decision 25 in
+    /// `docs/architecture.md`) appeared, vanished or moved by more than
+    /// [`RETURN_MOVED_S`] since the plan's prediction.
+    PredictionChanged {
         /// Index of the target.
         target: usize,
     },
@@ -397,10 +410,19 @@ pub fn simulate_with(
         if time_s >= max_duration_s {
             break;
         }
+        // How ownship predicts the targets now (what it would plan with).
+        let predicted: Vec<TargetState> = targets
+            .iter()
+            .zip(&latches)
+            .map(|(target, latch)| {
+                target.announced(&own, latch.map(|latch| latch.encounter), &config.rules)
+            })
+            .collect();
         if trigger.is_none() {
             trigger = replan_trigger(
                 active.as_ref(),
                 &targets,
+                &predicted,
                 &latches,
                 time_s,
                 settings.replan_deviation_m,
@@ -410,13 +432,6 @@ pub fn simulate_with(
             trigger = Some(PlanTrigger::Retry);
         }
         if let Some(why) = trigger.take() {
-            let predicted: Vec<TargetState> = targets
-                .iter()
-                .zip(&latches)
-                .map(|(target, latch)| {
-                    target.announced(&own, latch.map(|latch| latch.encounter), &config.rules)
-                })
-                .collect();
             let problem = PlanningProblem {
                 start_time_s: time_s,
                 ownship: own,

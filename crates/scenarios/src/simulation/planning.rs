@@ -13,6 +13,7 @@ use vorrt_planner::{
 use super::target::SimulatedTarget;
 use super::{
     EVASION_COURSES, EVASION_HORIZON_S, PlanEvent, PlanTrigger, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
+    RETURN_MOVED_S,
 };
 
 /// When ownship, sailing a fallback plan (or the evasive manoeuvre), next
@@ -281,6 +282,7 @@ pub(super) fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState
 pub(super) fn replan_trigger(
     active: Option<&ActivePlan>,
     targets: &[SimulatedTarget],
+    predicted_now: &[TargetState],
     latches: &[Option<EncounterLatch>],
     time_s: f64,
     deviation_m: f64,
@@ -291,6 +293,15 @@ pub(super) fn replan_trigger(
         let expected = predicted.predict(elapsed_s).vessel.position_m;
         if expected.distance(target.state.vessel.position_m) > deviation_m {
             return Some(PlanTrigger::TargetOffPrediction { target: index });
+        }
+    }
+    // A return to its route foreseen now that the plan did not assume (or
+    // at another time): the target is where it was predicted, but not
+    // where it is now predicted to go.
+    for (index, (now, planned)) in predicted_now.iter().zip(&active.predicted).enumerate() {
+        let assumed = planned.predict(elapsed_s).holds_course_for_s;
+        if return_moved(assumed, now.holds_course_for_s) {
+            return Some(PlanTrigger::PredictionChanged { target: index });
         }
     }
     for (index, latch) in latches.iter().enumerate() {
@@ -315,10 +326,33 @@ pub(super) fn replan_trigger(
     None
 }
 
+/// Whether a target's return to its route, `assumed_s` from now by the plan
+/// in force and `now_s` by the present prediction (`None`: no return
+/// foreseen), differs enough to ask whether the plan still holds.
+fn return_moved(assumed_s: Option<f64>, now_s: Option<f64>) -> bool {
+    match (assumed_s, now_s) {
+        (None, None) => false,
+        (Some(assumed_s), Some(now_s)) => (assumed_s - now_s).abs() > RETURN_MOVED_S,
+        _ => true,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use vorrt_colregs::Encounter;
+
+    #[test]
+    fn a_return_foreseen_anew_or_moved_asks_again() {
+        assert!(!return_moved(None, None));
+        assert!(return_moved(None, Some(200.0)), "a return now foreseen");
+        assert!(return_moved(Some(20.0), None), "no longer foreseen");
+        assert!(!return_moved(Some(100.0), Some(100.0 + RETURN_MOVED_S)));
+        assert!(return_moved(
+            Some(100.0),
+            Some(100.0 + RETURN_MOVED_S + 5.0)
+        ));
+    }
 
     fn latch(encounter: Encounter) -> Option<EncounterLatch> {
         Some(EncounterLatch {
