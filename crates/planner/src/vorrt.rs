@@ -15,8 +15,9 @@
 
 use crate::config::{PlannerConfig, SearchEffort};
 use crate::error::PlannerError;
-use crate::plan::{Plan, PlanStatistics, Waypoint};
+use crate::plan::{Plan, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
+use crate::replay::{FailedSearch, Recording};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
 use crate::simplify::{SimplifiedLeg, Speeds, simplify};
@@ -61,6 +62,8 @@ pub struct Planner {
     tree: Tree,
     tracks: Vec<LinearTrack>,
     scratch: EncounterState,
+    /// The last search, when it found no safe path.
+    last_failure: Option<Box<FailedSearch>>,
 }
 
 enum Growth {
@@ -80,6 +83,7 @@ impl Planner {
             tree: Tree::default(),
             tracks: Vec::new(),
             scratch: EncounterState::default(),
+            last_failure: None,
         })
     }
 
@@ -116,9 +120,46 @@ impl Planner {
         let configured = self.config;
         let route_m = problem.ownship.position_m.distance(problem.goal_m);
         self.config = configured.for_route(route_m);
-        let result = self.plan_within_budgets(problem, seed, effort);
+        let mut refused = RejectionCounts::default();
+        let result = self.plan_within_budgets(problem, seed, effort, &mut refused);
         let config = std::mem::replace(&mut self.config, configured);
+        self.last_failure = match &result {
+            Err(PlannerError::NoSafePath { statistics }) => {
+                refused.add(&statistics.rejections);
+                Some(Box::new(FailedSearch {
+                    problem: problem.clone(),
+                    config: configured,
+                    seed,
+                    effort,
+                    refused,
+                }))
+            }
+            _ => None,
+        };
         result.map_err(|error| error.blame_budget(&config, route_m))
+    }
+
+    /// Whether a planner with `config`, asked to plan `problem` with `seed`
+    /// and `effort`, would only repeat this planner's last search, which
+    /// found no safe path: the same problem, seed and effort, `config`
+    /// equal to this planner's but for a compliance level at most as strict,
+    /// and no move of that search (in the tree, the path simplifier or the
+    /// manoeuvre search) refused for a duty `config`'s level does not check
+    /// ([`Compliance::checks`](crate::Compliance::checks)). Every verdict of
+    /// the validity check would then be the same, and so would the samples
+    /// drawn and the failure: a closed loop's graded fallback skips that
+    /// level.
+    #[must_use]
+    pub fn would_repeat(
+        &self,
+        problem: &PlanningProblem,
+        config: &PlannerConfig,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> bool {
+        self.last_failure
+            .as_ref()
+            .is_some_and(|failed| failed.repeated_by(problem, config, seed, effort))
     }
 
     fn plan_within_budgets(
@@ -126,6 +167,7 @@ impl Planner {
         problem: &PlanningProblem,
         seed: u64,
         effort: SearchEffort,
+        refused: &mut RejectionCounts,
     ) -> Result<Plan, PlannerError> {
         problem.validate()?;
         let started = Instant::now();
@@ -189,7 +231,7 @@ impl Planner {
             statistics.nodes = 1;
             if attempt == 0
                 && own.position_m != problem.goal_m
-                && let Some(mut plan) = self.extract(problem, 0, &mut statistics)
+                && let Some(mut plan) = self.extract(problem, 0, &mut statistics, refused)
             {
                 plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                 return Ok(plan);
@@ -219,7 +261,7 @@ impl Planner {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract(problem, node, &mut statistics) {
+                match self.extract(problem, node, &mut statistics, refused) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -366,11 +408,13 @@ impl Planner {
     /// (`None` when there is none). For the root alone (`node` 0, short of
     /// the goal) with rate-limited turns, the manoeuvre search of
     /// [`simplify`] from the start: one alteration held, then the goal.
+    /// Every leg the validity check refuses is counted in `refused`.
     fn extract(
         &self,
         problem: &PlanningProblem,
         node: u32,
         statistics: &mut PlanStatistics,
+        refused: &mut RejectionCounts,
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
         let own = problem.ownship_at_service_speed();
@@ -449,9 +493,10 @@ impl Planner {
                         problem.start_time_s,
                     )
                     .with_steady_course(problem.steady_course_rad);
-                    simplify(
+                    let recording = Recording::new(&checker);
+                    let legs = simplify(
                         &RateLimitedTurn::from_rate(own.speed_mps, rate),
-                        &checker,
+                        &recording,
                         Pose {
                             position_m: own.position_m,
                             course_rad: own.course_rad,
@@ -459,7 +504,9 @@ impl Planner {
                         speeds,
                         &points,
                         &root,
-                    )
+                    );
+                    refused.add(&recording.refused.get());
+                    legs
                 })?
             }
         };
@@ -598,5 +645,40 @@ mod tests {
             samples_of(planner.plan_with(&problem, 3, SearchEffort::default())),
             full
         );
+    }
+
+    #[test]
+    fn a_weaker_level_that_would_repeat_a_failed_search_draws_the_same() {
+        // The blocked goal, with no encounter ever latched (a latch needs the
+        // target within MTD): every refusal is for safety.
+        let (problem, mut config) = blocked();
+        config.rules.mtd_m = 1.0;
+        let mut full = Planner::new(config).expect("valid");
+        let failure = samples_of(full.plan_with(&problem, 5, SearchEffort::FirstPhase));
+        let directions = PlannerConfig {
+            compliance: crate::Compliance::Directions,
+            ..config
+        };
+        // Nothing was refused for the manner of an action: the directions
+        // level would make the same search.
+        assert!(full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
+        let mut weaker = Planner::new(directions).expect("valid");
+        let again = weaker.plan_with(&problem, 5, SearchEffort::FirstPhase);
+        assert_eq!(samples_of(again), failure);
+        assert_eq!(
+            weaker.last_failure.as_ref().map(|failed| failed.refused),
+            full.last_failure.as_ref().map(|failed| failed.refused)
+        );
+        // Another seed, effort or problem, or a stricter level: another search.
+        assert!(!full.would_repeat(&problem, &directions, 6, SearchEffort::FirstPhase));
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::Full));
+        assert!(!weaker.would_repeat(&problem, &config, 5, SearchEffort::FirstPhase));
+        let mut moved = problem.clone();
+        moved.ownship.position_m.x += 1.0;
+        assert!(!full.would_repeat(&moved, &directions, 5, SearchEffort::FirstPhase));
+        // A plan found forgets the failure.
+        let open = PlanningProblem::new(problem.ownship, DVec2::new(3000.0, 0.0), Vec::new());
+        full.plan(&open, 5).expect("open water");
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
     }
 }
