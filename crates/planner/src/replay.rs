@@ -148,4 +148,54 @@ mod tests {
         };
         assert!(!failed.repeated_by(&problem, &other, 1, SearchEffort::Full));
     }
+
+    #[test]
+    fn a_weaker_level_that_would_repeat_a_failed_search_draws_the_same() {
+        // The blocked goal, with no encounter ever latched (a latch needs the
+        // target within MTD): every refusal is for safety.
+        let own = vorrt_colregs::VesselState::new(glam::DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = glam::DVec2::new(0.0, 3000.0);
+        let blocker = vorrt_jfs::TargetState::constant_velocity(vorrt_colregs::VesselState::new(
+            goal_m, 0.0, 0.0, 50.0,
+        ));
+        let problem = PlanningProblem::new(own, goal_m, vec![blocker]);
+        let mut config = PlannerConfig {
+            nodes_per_phase: 40,
+            samples_per_phase: 40,
+            nodes_per_route_step: 0.0,
+            max_restarts: 1,
+            ..PlannerConfig::default()
+        };
+        config.rules.mtd_m = 1.0;
+        let samples_of = |result: Result<crate::Plan, crate::PlannerError>| {
+            result
+                .expect_err("blocked")
+                .statistics()
+                .expect("statistics")
+                .samples
+        };
+        let mut full = crate::Planner::new(config).expect("valid");
+        let failure = samples_of(full.plan_with(&problem, 5, SearchEffort::FirstPhase));
+        let directions = PlannerConfig {
+            compliance: Compliance::Directions,
+            ..config
+        };
+        // Nothing was refused for the manner of an action: the directions
+        // level would make the same search.
+        assert!(full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
+        let mut weaker = crate::Planner::new(directions).expect("valid");
+        let again = weaker.plan_with(&problem, 5, SearchEffort::FirstPhase);
+        assert_eq!(samples_of(again), failure);
+        // Another seed, effort or problem, or a stricter level: another search.
+        assert!(!full.would_repeat(&problem, &directions, 6, SearchEffort::FirstPhase));
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::Full));
+        assert!(!weaker.would_repeat(&problem, &config, 5, SearchEffort::FirstPhase));
+        let mut moved = problem.clone();
+        moved.ownship.position_m.x += 1.0;
+        assert!(!full.would_repeat(&moved, &directions, 5, SearchEffort::FirstPhase));
+        // A plan found forgets the failure.
+        let open = PlanningProblem::new(problem.ownship, glam::DVec2::new(3000.0, 0.0), Vec::new());
+        full.plan(&open, 5).expect("open water");
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
+    }
 }

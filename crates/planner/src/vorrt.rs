@@ -20,7 +20,7 @@ use crate::problem::PlanningProblem;
 use crate::replay::{FailedSearch, Recording};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
-use crate::simplify::{SimplifiedLeg, Speeds, simplify};
+use crate::simplify::{SimplifiedLeg, Speeds, simplify_after};
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
@@ -212,6 +212,7 @@ impl Planner {
         let capacity = 2 * config.nodes_per_phase + 2;
         let mut statistics = PlanStatistics::default();
         let mut total_nodes = 0u64;
+        let mut root_searched = false;
 
         for attempt in 0..=config.max_restarts {
             statistics.restarts = attempt as u64;
@@ -229,12 +230,17 @@ impl Planner {
             // The manoeuvre a mariner would make (one alteration held, then
             // the goal), when it is valid, needs no tree at all.
             statistics.nodes = 1;
-            if attempt == 0
-                && own.position_m != problem.goal_m
-                && let Some(mut plan) = self.extract(problem, 0, &mut statistics, refused)
-            {
-                plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
-                return Ok(plan);
+            if attempt == 0 && own.position_m != problem.goal_m {
+                match self.extract(problem, 0, &mut statistics, refused, false) {
+                    Some(mut plan) => {
+                        plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
+                        return Ok(plan);
+                    }
+                    // The leg to the goal and the manoeuvre search from the
+                    // root failed: a branch's simplification, which starts
+                    // with them, need not validate them again.
+                    None => root_searched = true,
+                }
             }
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
@@ -261,7 +267,7 @@ impl Planner {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract(problem, node, &mut statistics, refused) {
+                match self.extract(problem, node, &mut statistics, refused, root_searched) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -408,13 +414,16 @@ impl Planner {
     /// (`None` when there is none). For the root alone (`node` 0, short of
     /// the goal) with rate-limited turns, the manoeuvre search of
     /// [`simplify`] from the start: one alteration held, then the goal.
-    /// Every leg the validity check refuses is counted in `refused`.
+    /// Every leg the validity check refuses is counted in `refused`. With
+    /// `root_searched`, the manoeuvre search from the root (at this
+    /// planner's own settings) is known to fail ([`simplify_after`]).
     fn extract(
         &self,
         problem: &PlanningProblem,
         node: u32,
         statistics: &mut PlanStatistics,
         refused: &mut RejectionCounts,
+        root_searched: bool,
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
         let own = problem.ownship_at_service_speed();
@@ -466,12 +475,6 @@ impl Planner {
                     clearance_m: self.config.clearance_m * self.config.preferred_clearance_factor,
                     ..self.config
                 };
-                let configs: &[&PlannerConfig] =
-                    if node == 0 && self.config.preferred_clearance_factor > 1.0 {
-                        &[&preferred, &self.config]
-                    } else {
-                        &[&self.config]
-                    };
                 let points: Vec<DVec2> = if node == 0 {
                     vec![problem.goal_m]
                 } else {
@@ -484,7 +487,7 @@ impl Planner {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),
                 };
-                configs.iter().find_map(|config| {
+                let mut search = |config: &PlannerConfig| {
                     let checker = SafetyChecker::new(
                         config,
                         &self.tracks,
@@ -494,7 +497,7 @@ impl Planner {
                     )
                     .with_steady_course(problem.steady_course_rad);
                     let recording = Recording::new(&checker);
-                    let legs = simplify(
+                    let legs = simplify_after(
                         &RateLimitedTurn::from_rate(own.speed_mps, rate),
                         &recording,
                         Pose {
@@ -504,10 +507,23 @@ impl Planner {
                         speeds,
                         &points,
                         &root,
+                        root_searched && node != 0,
                     );
                     refused.add(&recording.refused.get());
                     legs
-                })?
+                };
+                // d_th is searched first: every check that involves the
+                // clearance refuses a distance below it, so what is valid at
+                // the wider clearance is valid at d_th, and when no
+                // manoeuvre is valid at d_th none is at the wider one, which
+                // then is not searched. Otherwise the wider one is
+                // preferred, as before.
+                let floor = search(&self.config)?;
+                if node == 0 && self.config.preferred_clearance_factor > 1.0 {
+                    search(&preferred).unwrap_or(floor)
+                } else {
+                    floor
+                }
             }
         };
         let mut waypoints = Vec::with_capacity(legs.len() + 1);
@@ -645,40 +661,5 @@ mod tests {
             samples_of(planner.plan_with(&problem, 3, SearchEffort::default())),
             full
         );
-    }
-
-    #[test]
-    fn a_weaker_level_that_would_repeat_a_failed_search_draws_the_same() {
-        // The blocked goal, with no encounter ever latched (a latch needs the
-        // target within MTD): every refusal is for safety.
-        let (problem, mut config) = blocked();
-        config.rules.mtd_m = 1.0;
-        let mut full = Planner::new(config).expect("valid");
-        let failure = samples_of(full.plan_with(&problem, 5, SearchEffort::FirstPhase));
-        let directions = PlannerConfig {
-            compliance: crate::Compliance::Directions,
-            ..config
-        };
-        // Nothing was refused for the manner of an action: the directions
-        // level would make the same search.
-        assert!(full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
-        let mut weaker = Planner::new(directions).expect("valid");
-        let again = weaker.plan_with(&problem, 5, SearchEffort::FirstPhase);
-        assert_eq!(samples_of(again), failure);
-        assert_eq!(
-            weaker.last_failure.as_ref().map(|failed| failed.refused),
-            full.last_failure.as_ref().map(|failed| failed.refused)
-        );
-        // Another seed, effort or problem, or a stricter level: another search.
-        assert!(!full.would_repeat(&problem, &directions, 6, SearchEffort::FirstPhase));
-        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::Full));
-        assert!(!weaker.would_repeat(&problem, &config, 5, SearchEffort::FirstPhase));
-        let mut moved = problem.clone();
-        moved.ownship.position_m.x += 1.0;
-        assert!(!full.would_repeat(&moved, &directions, 5, SearchEffort::FirstPhase));
-        // A plan found forgets the failure.
-        let open = PlanningProblem::new(problem.ownship, DVec2::new(3000.0, 0.0), Vec::new());
-        full.plan(&open, 5).expect("open water");
-        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
     }
 }
