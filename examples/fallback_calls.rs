@@ -5,7 +5,9 @@
 //! wall time and the samples drawn over all the levels tried
 //! (`PlanEvent::samples_drawn`, the same on every machine).
 //!
-//! Then, for retries: how often a retry finds a fully compliant plan after
+//! Then, for retries: which search found the fully compliant plans of the
+//! retries that found one (the manoeuvre search from the root, whose plan
+//! has one node, or a tree); and how often a retry finds a fully compliant plan after
 //! `k` failed calls in a row with the same encounters in force, and right
 //! after the encounters changed (the case for or against backing off;
 //! `docs/performance.md`, "2026-11-30: cheaper retries, a grid nearest-node index").
@@ -72,6 +74,8 @@ fn main() -> ExitCode {
     // (calls, seconds, samples) per group; (retries, successes) per streak.
     let mut groups: BTreeMap<String, (usize, f64, u64)> = BTreeMap::new();
     let mut streaks: BTreeMap<(bool, usize), (usize, usize)> = BTreeMap::new();
+    // Fully compliant plans found by retries: (by the manoeuvre search, by a tree).
+    let mut found_by = (0usize, 0usize);
     for item in &items {
         let Ok(record) = simulate(&item.scenario, item.seed) else {
             continue;
@@ -100,6 +104,13 @@ fn main() -> ExitCode {
             let changed = last_failure.is_some_and(|before| before != now);
             if changed {
                 failures = 0;
+            }
+            if retry && full {
+                if event.statistics.nodes <= 1 {
+                    found_by.0 += 1;
+                } else {
+                    found_by.1 += 1;
+                }
             }
             if retry {
                 let streak = streaks.entry((changed, failures.min(8))).or_default();
@@ -131,6 +142,10 @@ fn main() -> ExitCode {
     println!(
         "total {total_s:.2} s, {total_samples} samples, {} runs",
         items.len()
+    );
+    println!(
+        "fully compliant plans found by retries: {} by the manoeuvre search, {} by a tree",
+        found_by.0, found_by.1
     );
     println!(
         "retries: encounters changed since the last failure | failures before (8 = 8 or more) | retries | fully compliant plans found"

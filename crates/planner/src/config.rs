@@ -1,6 +1,7 @@
 //! Planner configuration, with the paper's values as defaults.
 
 use crate::error::PlannerError;
+use crate::plan::RejectionCause;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::RuleParameters;
 
@@ -82,6 +83,32 @@ impl Compliance {
             Compliance::Full => Some(Compliance::Directions),
             Compliance::Directions => Some(Compliance::SafetyOnly),
             Compliance::SafetyOnly => None,
+        }
+    }
+
+    /// Whether the validity check at this level can refuse a move for
+    /// `cause`: clearance and velocity obstacles at every level; the
+    /// manner of the action (its size, when it begins, that it is held:
+    /// rules 8, 16, checked by `vorrt_colregs::check_alteration` and
+    /// `check_action`) only at `Full`; the other COLREGs duties (the
+    /// directions, `check_motion` and `check_heading`) at `Full` and
+    /// `Directions`. This is what [`crate::safety::SafetyChecker`] applies at each
+    /// level; a search at a stricter level that refused nothing for a cause
+    /// the weaker level does not check is the search the weaker level would
+    /// make ([`Planner::would_repeat`](crate::Planner::would_repeat)).
+    #[must_use]
+    pub fn checks(self, cause: RejectionCause) -> bool {
+        use vorrt_colregs::ManeuverViolation::{
+            AlterationNotHeld, InsufficientAlteration, LateAction,
+        };
+        match cause {
+            RejectionCause::VelocityObstacle
+            | RejectionCause::Clearance
+            | RejectionCause::ClearanceAhead => true,
+            RejectionCause::Colregs(InsufficientAlteration | LateAction | AlterationNotHeld) => {
+                self == Compliance::Full
+            }
+            RejectionCause::Colregs(_) => self != Compliance::SafetyOnly,
         }
     }
 }

@@ -27,6 +27,7 @@ pub mod error;
 pub mod evasion;
 pub mod plan;
 pub mod problem;
+mod replay;
 pub mod safety;
 pub mod sampler;
 pub mod simplify;

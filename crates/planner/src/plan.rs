@@ -116,6 +116,13 @@ impl RejectionCounts {
         }
     }
 
+    /// Adds every count of `other`.
+    pub fn add(&mut self, other: &RejectionCounts) {
+        for (cause, count) in other.by_cause() {
+            *self.slot(cause) += count;
+        }
+    }
+
     /// Every cause with its count, in a fixed order.
     #[must_use]
     pub fn by_cause(&self) -> [(RejectionCause, u64); 12] {

@@ -113,7 +113,27 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
     points: &[DVec2],
     state: &EncounterState,
 ) -> Option<Vec<SimplifiedLeg>> {
+    simplify_after(model, validator, start, speeds, points, state, false)
+}
+
+/// As [`simplify`]; with `start_searched`, the leg from `start` to the
+/// goal and the manoeuvre search from `start` are known to fail (the same
+/// model, validator, start, speeds, encounters and goal were searched
+/// before: the planner's manoeuvre search from the root, before a branch of
+/// its tree is simplified), so they are not validated again. Every verdict
+/// is a pure function of the leg and the encounters, so the legs returned
+/// are the same.
+pub fn simplify_after<M: MotionModel, V: MotionValidator>(
+    model: &M,
+    validator: &V,
+    start: Pose,
+    speeds: Speeds,
+    points: &[DVec2],
+    state: &EncounterState,
+    start_searched: bool,
+) -> Option<Vec<SimplifiedLeg>> {
     let mut legs = Vec::new();
+    let mut searched = start_searched;
     let mut pose = start;
     let mut speed_mps = speeds.start_mps;
     let mut elapsed_s = 0.0;
@@ -133,22 +153,25 @@ pub fn simplify<M: MotionModel, V: MotionValidator>(
                 state: after,
             })
         };
-        if let Some(leg) = attempt(last) {
-            legs.push(leg);
-            break;
-        }
-        // The manoeuvre mariners use: turn onto a course (or hold the present
-        // one), hold it a while, then one leg to the goal.
-        let from = SimplifiedLeg {
-            leg: Leg::straight(pose.position_m, pose.course_rad, 0.0, speed_mps),
-            end_elapsed_s: elapsed_s,
-            state: state.clone(),
-        };
-        if let Some((hold, back)) = alter_hold_return(model, validator, &from, speeds, points[last])
-        {
-            legs.push(hold);
-            legs.push(back);
-            break;
+        if !std::mem::take(&mut searched) {
+            if let Some(leg) = attempt(last) {
+                legs.push(leg);
+                break;
+            }
+            // The manoeuvre mariners use: turn onto a course (or hold the
+            // present one), hold it a while, then one leg to the goal.
+            let from = SimplifiedLeg {
+                leg: Leg::straight(pose.position_m, pose.course_rad, 0.0, speed_mps),
+                end_elapsed_s: elapsed_s,
+                state: state.clone(),
+            };
+            if let Some((hold, back)) =
+                alter_hold_return(model, validator, &from, speeds, points[last])
+            {
+                legs.push(hold);
+                legs.push(back);
+                break;
+            }
         }
         let (index, leg) = farthest_reachable(next, last, &attempt)?;
         pose = leg.leg.end_pose();
@@ -314,4 +337,74 @@ fn farthest_reachable<F: Fn(usize) -> Option<SimplifiedLeg>>(
         }
     }
     Some(best)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::RejectionCause;
+    use std::cell::Cell;
+    use vorrt_jfs::RateLimitedTurn;
+
+    /// Refuses every leg from `start_m` but the one toward `first_m`, and
+    /// accepts every other leg; counts the legs it judges.
+    struct OnlyToFirst {
+        start_m: DVec2,
+        first_m: DVec2,
+        judged: Cell<usize>,
+    }
+
+    impl MotionValidator for OnlyToFirst {
+        fn validate(
+            &self,
+            leg: &Leg,
+            _start_elapsed_s: f64,
+            _state: &mut EncounterState,
+        ) -> Result<(), RejectionCause> {
+            self.judged.set(self.judged.get() + 1);
+            if leg.start_m.distance(self.start_m) < 1e-9
+                && leg.end_m().distance(self.first_m) > 1e-6
+            {
+                Err(RejectionCause::Clearance)
+            } else {
+                Ok(())
+            }
+        }
+    }
+
+    #[test]
+    fn a_start_already_searched_is_not_searched_again_and_the_legs_are_the_same() {
+        let first_m = DVec2::new(600.0, 1500.0);
+        let points = [first_m, DVec2::new(0.0, 4000.0)];
+        let start = Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 0.0,
+        };
+        let model = RateLimitedTurn {
+            turn_radius_m: 300.0,
+        };
+        let run = |start_searched: bool| {
+            let validator = OnlyToFirst {
+                start_m: DVec2::ZERO,
+                first_m,
+                judged: Cell::new(0),
+            };
+            let legs = simplify_after(
+                &model,
+                &validator,
+                start,
+                Speeds::constant(6.0),
+                &points,
+                &EncounterState::default(),
+                start_searched,
+            );
+            (legs, validator.judged.get())
+        };
+        let (searched, fresh) = (run(true), run(false));
+        assert!(searched.0.is_some());
+        assert_eq!(searched.0, fresh.0);
+        // The leg to the goal and the first hold of each of the 24
+        // alterations and speeds, refused at the start, are not judged again.
+        assert_eq!(fresh.1 - searched.1, 1 + 24);
+    }
 }

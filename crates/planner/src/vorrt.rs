@@ -15,11 +15,12 @@
 
 use crate::config::{PlannerConfig, SearchEffort};
 use crate::error::PlannerError;
-use crate::plan::{Plan, PlanStatistics, Waypoint};
+use crate::plan::{Plan, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
+use crate::replay::{FailedSearch, Recording};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
-use crate::simplify::{SimplifiedLeg, Speeds, simplify};
+use crate::simplify::{SimplifiedLeg, Speeds, simplify_after};
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
@@ -61,6 +62,8 @@ pub struct Planner {
     tree: Tree,
     tracks: Vec<LinearTrack>,
     scratch: EncounterState,
+    /// The last search, when it found no safe path.
+    last_failure: Option<Box<FailedSearch>>,
 }
 
 enum Growth {
@@ -80,6 +83,7 @@ impl Planner {
             tree: Tree::default(),
             tracks: Vec::new(),
             scratch: EncounterState::default(),
+            last_failure: None,
         })
     }
 
@@ -116,9 +120,46 @@ impl Planner {
         let configured = self.config;
         let route_m = problem.ownship.position_m.distance(problem.goal_m);
         self.config = configured.for_route(route_m);
-        let result = self.plan_within_budgets(problem, seed, effort);
+        let mut refused = RejectionCounts::default();
+        let result = self.plan_within_budgets(problem, seed, effort, &mut refused);
         let config = std::mem::replace(&mut self.config, configured);
+        self.last_failure = match &result {
+            Err(PlannerError::NoSafePath { statistics }) => {
+                refused.add(&statistics.rejections);
+                Some(Box::new(FailedSearch {
+                    problem: problem.clone(),
+                    config: configured,
+                    seed,
+                    effort,
+                    refused,
+                }))
+            }
+            _ => None,
+        };
         result.map_err(|error| error.blame_budget(&config, route_m))
+    }
+
+    /// Whether a planner with `config`, asked to plan `problem` with `seed`
+    /// and `effort`, would only repeat this planner's last search, which
+    /// found no safe path: the same problem, seed and effort, `config`
+    /// equal to this planner's but for a compliance level at most as strict,
+    /// and no move of that search (in the tree, the path simplifier or the
+    /// manoeuvre search) refused for a duty `config`'s level does not check
+    /// ([`Compliance::checks`](crate::Compliance::checks)). Every verdict of
+    /// the validity check would then be the same, and so would the samples
+    /// drawn and the failure: a closed loop's graded fallback skips that
+    /// level.
+    #[must_use]
+    pub fn would_repeat(
+        &self,
+        problem: &PlanningProblem,
+        config: &PlannerConfig,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> bool {
+        self.last_failure
+            .as_ref()
+            .is_some_and(|failed| failed.repeated_by(problem, config, seed, effort))
     }
 
     fn plan_within_budgets(
@@ -126,6 +167,7 @@ impl Planner {
         problem: &PlanningProblem,
         seed: u64,
         effort: SearchEffort,
+        refused: &mut RejectionCounts,
     ) -> Result<Plan, PlannerError> {
         problem.validate()?;
         let started = Instant::now();
@@ -170,6 +212,7 @@ impl Planner {
         let capacity = 2 * config.nodes_per_phase + 2;
         let mut statistics = PlanStatistics::default();
         let mut total_nodes = 0u64;
+        let mut root_searched = false;
 
         for attempt in 0..=config.max_restarts {
             statistics.restarts = attempt as u64;
@@ -187,12 +230,17 @@ impl Planner {
             // The manoeuvre a mariner would make (one alteration held, then
             // the goal), when it is valid, needs no tree at all.
             statistics.nodes = 1;
-            if attempt == 0
-                && own.position_m != problem.goal_m
-                && let Some(mut plan) = self.extract(problem, 0, &mut statistics)
-            {
-                plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
-                return Ok(plan);
+            if attempt == 0 && own.position_m != problem.goal_m {
+                match self.extract(problem, 0, &mut statistics, refused, false) {
+                    Some(mut plan) => {
+                        plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
+                        return Ok(plan);
+                    }
+                    // The leg to the goal and the manoeuvre search from the
+                    // root failed: a branch's simplification, which starts
+                    // with them, need not validate them again.
+                    None => root_searched = true,
+                }
             }
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
@@ -219,7 +267,7 @@ impl Planner {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract(problem, node, &mut statistics) {
+                match self.extract(problem, node, &mut statistics, refused, root_searched) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -366,11 +414,16 @@ impl Planner {
     /// (`None` when there is none). For the root alone (`node` 0, short of
     /// the goal) with rate-limited turns, the manoeuvre search of
     /// [`simplify`] from the start: one alteration held, then the goal.
+    /// Every leg the validity check refuses is counted in `refused`. With
+    /// `root_searched`, the manoeuvre search from the root (at this
+    /// planner's own settings) is known to fail ([`simplify_after`]).
     fn extract(
         &self,
         problem: &PlanningProblem,
         node: u32,
         statistics: &mut PlanStatistics,
+        refused: &mut RejectionCounts,
+        root_searched: bool,
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
         let own = problem.ownship_at_service_speed();
@@ -422,12 +475,6 @@ impl Planner {
                     clearance_m: self.config.clearance_m * self.config.preferred_clearance_factor,
                     ..self.config
                 };
-                let configs: &[&PlannerConfig] =
-                    if node == 0 && self.config.preferred_clearance_factor > 1.0 {
-                        &[&preferred, &self.config]
-                    } else {
-                        &[&self.config]
-                    };
                 let points: Vec<DVec2> = if node == 0 {
                     vec![problem.goal_m]
                 } else {
@@ -440,7 +487,7 @@ impl Planner {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),
                 };
-                configs.iter().find_map(|config| {
+                let mut search = |config: &PlannerConfig| {
                     let checker = SafetyChecker::new(
                         config,
                         &self.tracks,
@@ -449,9 +496,10 @@ impl Planner {
                         problem.start_time_s,
                     )
                     .with_steady_course(problem.steady_course_rad);
-                    simplify(
+                    let recording = Recording::new(&checker);
+                    let legs = simplify_after(
                         &RateLimitedTurn::from_rate(own.speed_mps, rate),
-                        &checker,
+                        &recording,
                         Pose {
                             position_m: own.position_m,
                             course_rad: own.course_rad,
@@ -459,8 +507,23 @@ impl Planner {
                         speeds,
                         &points,
                         &root,
-                    )
-                })?
+                        root_searched && node != 0,
+                    );
+                    refused.add(&recording.refused.get());
+                    legs
+                };
+                // d_th is searched first: every check that involves the
+                // clearance refuses a distance below it, so what is valid at
+                // the wider clearance is valid at d_th, and when no
+                // manoeuvre is valid at d_th none is at the wider one, which
+                // then is not searched. Otherwise the wider one is
+                // preferred, as before.
+                let floor = search(&self.config)?;
+                if node == 0 && self.config.preferred_clearance_factor > 1.0 {
+                    search(&preferred).unwrap_or(floor)
+                } else {
+                    floor
+                }
             }
         };
         let mut waypoints = Vec::with_capacity(legs.len() + 1);

@@ -413,6 +413,17 @@ impl Leg {
 
     /// The pose `distance_m` metres along the leg (clamped to it).
     pub(super) fn pose_along(&self, distance_m: f64) -> Pose {
+        self.pose_along_from(
+            distance_m,
+            self.turn_end_m(),
+            angle::course_to_unit(self.course_rad),
+        )
+    }
+
+    /// [`pose_along`](Self::pose_along) with the leg's turn end and the unit
+    /// vector of its course given (worked out once by a caller that asks
+    /// for many poses: the same values, so the same poses).
+    pub(super) fn pose_along_from(&self, distance_m: f64, turn_end_m: DVec2, unit: DVec2) -> Pose {
         let distance_m = distance_m.clamp(0.0, self.length_m());
         let arc_m = self.arc_m();
         if distance_m < arc_m {
@@ -425,8 +436,8 @@ impl Leg {
             }
         } else {
             Pose {
-                position_m: self.turn_end_m()
-                    + angle::velocity(self.course_rad, distance_m - arc_m),
+                // angle::velocity(course, d) is course_to_unit(course) * d.
+                position_m: turn_end_m + unit * (distance_m - arc_m),
                 course_rad: self.course_rad,
             }
         }
@@ -617,6 +628,9 @@ impl Leg {
             change_s,
             change_m: self.speed_change_m(),
             from_m: 0.0,
+            turn_end_m: self.turn_end_m(),
+            unit: angle::course_to_unit(self.course_rad),
+            last_to: None,
         }
     }
 }

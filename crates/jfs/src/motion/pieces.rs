@@ -22,6 +22,12 @@ pub(super) struct Pieces<'a> {
     pub(super) change_m: f64,
     /// Where the next piece starts, metres along the leg.
     pub(super) from_m: f64,
+    /// The leg's turn end and the unit vector of its course, worked out
+    /// once (`Leg::turn_end_m`, `angle::course_to_unit`).
+    pub(super) turn_end_m: DVec2,
+    pub(super) unit: DVec2,
+    /// Where the last piece ended: (metres along the leg, position).
+    pub(super) last_to: Option<(f64, DVec2)>,
 }
 
 impl Pieces<'_> {
@@ -86,11 +92,12 @@ impl Pieces<'_> {
         }
         let run = index - chords;
         let run_s = leg.straight_duration_s() / runs as f64;
-        let velocity = leg.velocity_mps();
+        // Leg::velocity_mps is course_to_unit(course) * speed.
+        let velocity = self.unit * leg.speed_mps;
         let (start_m, duration_s) = if runs == 1 {
-            (leg.turn_end_m(), leg.straight_duration_s())
+            (self.turn_end_m, leg.straight_duration_s())
         } else {
-            (leg.turn_end_m() + velocity * (run_s * run as f64), run_s)
+            (self.turn_end_m + velocity * (run_s * run as f64), run_s)
         };
         Some(Piece {
             start_m,
@@ -122,8 +129,17 @@ impl Iterator for Pieces<'_> {
         self.from_m = to_m;
         let start_s = leg.time_at_distance(from_m);
         let duration_s = leg.time_at_distance(to_m) - start_s;
-        let from = leg.pose_along(from_m).position_m;
-        let to = leg.pose_along(to_m).position_m;
+        let along = |distance_m: f64| {
+            leg.pose_along_from(distance_m, self.turn_end_m, self.unit)
+                .position_m
+        };
+        // A piece starts where the last one ended.
+        let from = match self.last_to {
+            Some((at_m, position_m)) if at_m == from_m => position_m,
+            _ => along(from_m),
+        };
+        let to = along(to_m);
+        self.last_to = Some((to_m, to));
         let turning = to_m <= arc_m + SAME_POINT_M && arc_m > 0.0;
         let course_rad = if turning {
             let swept = 0.5 * (from_m + to_m) / leg.turn_radius_m;

@@ -89,7 +89,10 @@ pub(super) struct PlanCall {
 /// it, or else the evasive leg (sailed with `model`). A retry searches
 /// with the first phase only ([`SearchEffort::FirstPhase`]) at every level
 /// but the last (safety only): it is one more draw of many while ownship
-/// sails a fallback plan.
+/// sails a fallback plan. A level whose search would only repeat the failed
+/// search of a stricter level is not asked (`Planner::would_repeat`: no move
+/// was refused for a duty it drops, so it would draw the same samples and
+/// fail the same way).
 pub(super) fn plan_now(
     planners: &mut [Planner],
     problem: &PlanningProblem,
@@ -104,8 +107,11 @@ pub(super) fn plan_now(
     let mut first_error = None;
     let mut spent = PlanStatistics::default();
     let mut samples_drawn = 0u64;
-    for planner in planners.iter_mut() {
-        let compliance = planner.config().compliance;
+    // The last level that searched and failed (`would_repeat` knows
+    // whether it found no safe path).
+    let mut failed: Option<usize> = None;
+    for index in 0..planners.len() {
+        let compliance = planners[index].config().compliance;
         // A retry's cheaper draw is for compliance: the last level, safety
         // alone, always searches in full.
         let effort = if call.why == PlanTrigger::Retry && compliance.relaxed().is_some() {
@@ -113,6 +119,12 @@ pub(super) fn plan_now(
         } else {
             SearchEffort::Full
         };
+        if failed.is_some_and(|failed| {
+            planners[failed].would_repeat(problem, planners[index].config(), call.seed, effort)
+        }) {
+            continue;
+        }
+        let planner = &mut planners[index];
         match planner.plan_with(problem, call.seed, effort) {
             Ok(plan) => {
                 samples_drawn += plan.statistics.samples;
@@ -158,6 +170,7 @@ pub(super) fn plan_now(
                         spent.elapsed_s = elapsed_s;
                     }
                 }
+                failed = Some(index);
                 if first_error.is_none() {
                     first_error = Some(error);
                 }
@@ -379,5 +392,68 @@ mod tests {
         ));
         retry.succeeded();
         assert!(!retry.due(1e9, &[None, None]));
+    }
+
+    #[test]
+    fn a_fallback_level_that_would_repeat_the_failed_search_is_not_asked() {
+        use glam::DVec2;
+        use vorrt_planner::PlannerConfig;
+        // A vessel lies stopped on the goal, and no encounter is ever
+        // latched (MTD 1 m): every level refuses only for safety, so the
+        // weaker levels would draw the same samples and fail alike.
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = DVec2::new(0.0, 3000.0);
+        let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
+        let problem = PlanningProblem::new(own, goal_m, vec![blocker]);
+        let mut config = PlannerConfig {
+            nodes_per_phase: 40,
+            samples_per_phase: 40,
+            nodes_per_route_step: 0.0,
+            max_restarts: 1,
+            ..PlannerConfig::default()
+        };
+        config.rules.mtd_m = 1.0;
+        let mut planners: Vec<Planner> = [
+            Compliance::Full,
+            Compliance::Directions,
+            Compliance::SafetyOnly,
+        ]
+        .into_iter()
+        .map(|compliance| {
+            Planner::new(PlannerConfig {
+                compliance,
+                ..config
+            })
+            .expect("valid")
+        })
+        .collect();
+        let one_search = Planner::new(config)
+            .expect("valid")
+            .plan(&problem, 9)
+            .expect_err("blocked")
+            .statistics()
+            .expect("statistics")
+            .samples;
+        let (mut active, mut plans, mut retry) = (None, Vec::new(), RetryTimer::idle());
+        let model = OwnshipModel::Instant(vorrt_jfs::InstantTurn { max_turn_rad: 0.5 });
+        plan_now(
+            &mut planners,
+            &problem,
+            &model,
+            PlanCall {
+                why: PlanTrigger::Initial,
+                seed: 9,
+                clearance_m: config.clearance_m,
+                speed_change_mps2: 0.01,
+            },
+            &mut active,
+            &mut plans,
+            &mut retry,
+        );
+        let event = plans.last().expect("one call");
+        assert!(!event.succeeded);
+        // One search drawn, not three.
+        assert_eq!(event.samples_drawn, one_search);
+        assert!(active.is_some_and(|active| active.evasive));
     }
 }

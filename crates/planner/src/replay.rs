@@ -1,0 +1,201 @@
+//! When a weaker level of the graded fallback would only repeat a failed
+//! search.
+//!
+//! A search is a pure function of the problem, the configuration, the seed
+//! and the effort: every random draw follows from the seed, and what is kept
+//! follows from the validity check's verdicts. The levels of
+//! [`Compliance`](crate::Compliance) differ only in which duties that check
+//! applies ([`Compliance::checks`](crate::Compliance::checks)), and a weaker
+//! level applies a subset of a stricter level's checks, in the same order.
+//! So when a stricter search refused no move for a cause the weaker level
+//! does not check, every verdict of the weaker search is the same (what the
+//! stricter one accepted passes fewer checks; what it refused is refused by
+//! the same check, which the weaker one reaches because the checks before it
+//! passed), it draws the same samples, grows the same trees and fails the
+//! same way. Asking it costs a whole search and cannot change the answer.
+
+use crate::config::{Compliance, PlannerConfig, SearchEffort};
+use crate::plan::{RejectionCause, RejectionCounts};
+use crate::problem::PlanningProblem;
+use crate::validity::{EncounterState, MotionValidator};
+use std::cell::Cell;
+use vorrt_jfs::Leg;
+
+/// A search that found no safe path, with every move its validity check
+/// refused, by cause: in the tree, and in the path simplifier and the
+/// manoeuvre search.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct FailedSearch {
+    pub(crate) problem: PlanningProblem,
+    pub(crate) config: PlannerConfig,
+    pub(crate) seed: u64,
+    pub(crate) effort: SearchEffort,
+    pub(crate) refused: RejectionCounts,
+}
+
+impl FailedSearch {
+    /// Whether a search of the same problem with `config`, `seed` and
+    /// `effort` would repeat this one (see the module documentation).
+    pub(crate) fn repeated_by(
+        &self,
+        problem: &PlanningProblem,
+        config: &PlannerConfig,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> bool {
+        let same_but_compliance = PlannerConfig {
+            compliance: self.config.compliance,
+            ..*config
+        } == self.config;
+        same_but_compliance
+            && seed == self.seed
+            && effort == self.effort
+            && weaker_or_equal(config.compliance, self.config.compliance)
+            && self
+                .refused
+                .by_cause()
+                .iter()
+                .all(|&(cause, count)| count == 0 || config.compliance.checks(cause))
+            && *problem == self.problem
+    }
+}
+
+/// Whether `level` is `than` or one of its relaxations.
+fn weaker_or_equal(level: Compliance, than: Compliance) -> bool {
+    std::iter::successors(Some(than), |level| level.relaxed()).any(|weaker| weaker == level)
+}
+
+/// A validator that counts the moves it refuses, by cause.
+pub(crate) struct Recording<'a, V> {
+    pub(crate) validator: &'a V,
+    pub(crate) refused: Cell<RejectionCounts>,
+}
+
+impl<'a, V> Recording<'a, V> {
+    pub(crate) fn new(validator: &'a V) -> Self {
+        Self {
+            validator,
+            refused: Cell::new(RejectionCounts::default()),
+        }
+    }
+}
+
+impl<V: MotionValidator> MotionValidator for Recording<'_, V> {
+    fn validate(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let verdict = self.validator.validate(leg, start_elapsed_s, state);
+        if let Err(cause) = verdict {
+            let mut refused = self.refused.get();
+            refused.record(cause);
+            self.refused.set(refused);
+        }
+        verdict
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_a_weaker_or_equal_level_can_repeat_a_search() {
+        assert!(weaker_or_equal(Compliance::Directions, Compliance::Full));
+        assert!(weaker_or_equal(Compliance::SafetyOnly, Compliance::Full));
+        assert!(weaker_or_equal(Compliance::Full, Compliance::Full));
+        assert!(!weaker_or_equal(Compliance::Full, Compliance::Directions));
+        assert!(!weaker_or_equal(
+            Compliance::Directions,
+            Compliance::SafetyOnly
+        ));
+    }
+
+    #[test]
+    fn a_refusal_for_a_duty_the_weaker_level_drops_makes_another_search() {
+        let problem = PlanningProblem::new(
+            vorrt_colregs::VesselState::new(glam::DVec2::ZERO, 0.0, 6.0, 50.0),
+            glam::DVec2::new(0.0, 3000.0),
+            Vec::new(),
+        );
+        let full = PlannerConfig::default();
+        let at = |compliance| PlannerConfig { compliance, ..full };
+        let mut failed = FailedSearch {
+            problem: problem.clone(),
+            config: full,
+            seed: 1,
+            effort: SearchEffort::Full,
+            refused: RejectionCounts::default(),
+        };
+        failed.refused.clearance = 10;
+        failed.refused.port_turn = 3;
+        let repeats = |failed: &FailedSearch, compliance| {
+            failed.repeated_by(&problem, &at(compliance), 1, SearchEffort::Full)
+        };
+        assert!(repeats(&failed, Compliance::Directions));
+        // Safety only drops the port-turn duty.
+        assert!(!repeats(&failed, Compliance::SafetyOnly));
+        failed.refused.late_action = 1;
+        assert!(!repeats(&failed, Compliance::Directions));
+        assert!(repeats(&failed, Compliance::Full));
+        // Any other setting: another search.
+        let other = PlannerConfig {
+            compliance: Compliance::Full,
+            step_m: 50.0,
+            ..full
+        };
+        assert!(!failed.repeated_by(&problem, &other, 1, SearchEffort::Full));
+    }
+
+    #[test]
+    fn a_weaker_level_that_would_repeat_a_failed_search_draws_the_same() {
+        // The blocked goal, with no encounter ever latched (a latch needs the
+        // target within MTD): every refusal is for safety.
+        let own = vorrt_colregs::VesselState::new(glam::DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = glam::DVec2::new(0.0, 3000.0);
+        let blocker = vorrt_jfs::TargetState::constant_velocity(vorrt_colregs::VesselState::new(
+            goal_m, 0.0, 0.0, 50.0,
+        ));
+        let problem = PlanningProblem::new(own, goal_m, vec![blocker]);
+        let mut config = PlannerConfig {
+            nodes_per_phase: 40,
+            samples_per_phase: 40,
+            nodes_per_route_step: 0.0,
+            max_restarts: 1,
+            ..PlannerConfig::default()
+        };
+        config.rules.mtd_m = 1.0;
+        let samples_of = |result: Result<crate::Plan, crate::PlannerError>| {
+            result
+                .expect_err("blocked")
+                .statistics()
+                .expect("statistics")
+                .samples
+        };
+        let mut full = crate::Planner::new(config).expect("valid");
+        let failure = samples_of(full.plan_with(&problem, 5, SearchEffort::FirstPhase));
+        let directions = PlannerConfig {
+            compliance: Compliance::Directions,
+            ..config
+        };
+        // Nothing was refused for the manner of an action: the directions
+        // level would make the same search.
+        assert!(full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
+        let mut weaker = crate::Planner::new(directions).expect("valid");
+        let again = weaker.plan_with(&problem, 5, SearchEffort::FirstPhase);
+        assert_eq!(samples_of(again), failure);
+        // Another seed, effort or problem, or a stricter level: another search.
+        assert!(!full.would_repeat(&problem, &directions, 6, SearchEffort::FirstPhase));
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::Full));
+        assert!(!weaker.would_repeat(&problem, &config, 5, SearchEffort::FirstPhase));
+        let mut moved = problem.clone();
+        moved.ownship.position_m.x += 1.0;
+        assert!(!full.would_repeat(&moved, &directions, 5, SearchEffort::FirstPhase));
+        // A plan found forgets the failure.
+        let open = PlanningProblem::new(problem.ownship, glam::DVec2::new(3000.0, 0.0), Vec::new());
+        full.plan(&open, 5).expect("open water");
+        assert!(!full.would_repeat(&problem, &directions, 5, SearchEffort::FirstPhase));
+    }
+}
