@@ -213,6 +213,8 @@ impl Planner {
         let mut statistics = PlanStatistics::default();
         let mut total_nodes = 0u64;
         let mut root_searched = false;
+        // A retry (first phase only) is a draw where most searches fail.
+        let floor_first = effort == SearchEffort::FirstPhase;
 
         for attempt in 0..=config.max_restarts {
             statistics.restarts = attempt as u64;
@@ -231,7 +233,7 @@ impl Planner {
             // the goal), when it is valid, needs no tree at all.
             statistics.nodes = 1;
             if attempt == 0 && own.position_m != problem.goal_m {
-                match self.extract(problem, 0, &mut statistics, refused, false) {
+                match self.extract(problem, 0, &mut statistics, refused, false, floor_first) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -267,7 +269,14 @@ impl Planner {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract(problem, node, &mut statistics, refused, root_searched) {
+                match self.extract(
+                    problem,
+                    node,
+                    &mut statistics,
+                    refused,
+                    root_searched,
+                    floor_first,
+                ) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -416,7 +425,9 @@ impl Planner {
     /// [`simplify`] from the start: one alteration held, then the goal.
     /// Every leg the validity check refuses is counted in `refused`. With
     /// `root_searched`, the manoeuvre search from the root (at this
-    /// planner's own settings) is known to fail ([`simplify_after`]).
+    /// planner's own settings) is known to fail ([`simplify_after`]). With
+    /// `floor_first` the manoeuvre search from the root tries d_th before
+    /// the preferred clearance, else after it: the same plan either way.
     fn extract(
         &self,
         problem: &PlanningProblem,
@@ -424,6 +435,7 @@ impl Planner {
         statistics: &mut PlanStatistics,
         refused: &mut RejectionCounts,
         root_searched: bool,
+        floor_first: bool,
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
         let own = problem.ownship_at_service_speed();
@@ -512,17 +524,24 @@ impl Planner {
                     refused.add(&recording.refused.get());
                     legs
                 };
-                // d_th is searched first: every check that involves the
-                // clearance refuses a distance below it, so what is valid at
-                // the wider clearance is valid at d_th, and when no
-                // manoeuvre is valid at d_th none is at the wider one, which
-                // then is not searched. Otherwise the wider one is
-                // preferred, as before.
-                let floor = search(&self.config)?;
-                if node == 0 && self.config.preferred_clearance_factor > 1.0 {
+                // Every check that involves the clearance refuses a
+                // distance below it, so what is valid at the wider clearance
+                // is valid at d_th, and when no manoeuvre is valid at d_th
+                // none is at the wider one: the wider one is preferred, and
+                // the order of the two searches changes only their cost.
+                // Where the search is likely to fail (`floor_first`: a
+                // retry), d_th first spares the wider search; elsewhere the
+                // wider one first spares the search at d_th.
+                if node != 0 || self.config.preferred_clearance_factor <= 1.0 {
+                    search(&self.config)?
+                } else if floor_first {
+                    let floor = search(&self.config)?;
                     search(&preferred).unwrap_or(floor)
                 } else {
-                    floor
+                    match search(&preferred) {
+                        Some(legs) => legs,
+                        None => search(&self.config)?,
+                    }
                 }
             }
         };
