@@ -675,3 +675,44 @@ fn tiny_budget_is_exhausted_quickly() {
     );
     assert!(started.elapsed() < Duration::from_secs(1));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// The clearance test against a target that holds its course and then
+    /// turns for its goal (two legs, then at rest) never reports ownship
+    /// farther than it is: below the distance sampled every second, and at
+    /// most the second leg's margin plus the sampling's slack below it.
+    #[test]
+    fn min_distance_over_bounds_the_sampled_distance_to_a_turning_target(
+        target_x in -3000.0..3000.0f64, target_y in -3000.0..3000.0f64,
+        target_course in 0.0..std::f64::consts::TAU, target_speed in 0.5..10.0f64,
+        goal_x in -5000.0..5000.0f64, goal_y in -5000.0..5000.0f64, hold_s in 0.0..600.0f64,
+        own_course in 0.0..std::f64::consts::TAU, own_speed in 0.0..10.0f64,
+        elapsed_s in 0.0..600.0f64, duration_s in 1.0..900.0f64,
+    ) {
+        let target = TargetState::holding_course_then_toward_goal(
+            VesselState::new(DVec2::new(target_x, target_y), target_course, target_speed, 100.0),
+            DVec2::new(goal_x, goal_y),
+            hold_s,
+        );
+        let track = target.track();
+        let own_velocity = angle::velocity(own_course, own_speed);
+        let reported = vorrt_planner::safety::min_distance_over(DVec2::ZERO, own_velocity, &track, elapsed_s, duration_s);
+        let steps = duration_s.floor() as usize;
+        let sampled = (0..=steps)
+            .map(|step| step as f64)
+            .chain(std::iter::once(duration_s))
+            .map(|t| {
+                let expected = target.predict(elapsed_s + t).vessel.position_m;
+                (own_velocity * t).distance(expected)
+            })
+            .fold(f64::INFINITY, f64::min);
+        let slack_m = (own_speed + target_speed) * 0.5 + 1e-6;
+        prop_assert!(reported <= sampled + 1e-6, "{reported} vs sampled {sampled}");
+        prop_assert!(
+            reported >= sampled - track.then_margin_m - slack_m,
+            "{reported} vs sampled {sampled}, margin {}", track.then_margin_m
+        );
+    }
+}
