@@ -312,6 +312,10 @@ pub(super) fn replan_trigger(
     // at another time): the target is where it was predicted, but not
     // where it is now predicted to go.
     for (index, (now, planned)) in predicted_now.iter().zip(&active.predicted).enumerate() {
+        if planned.holds_course_for_s.is_none() && now.holds_course_for_s.is_none() {
+            // No return foreseen, then or now (nearly every target).
+            continue;
+        }
         let assumed = planned.predict(elapsed_s).holds_course_for_s;
         if return_moved(assumed, now.holds_course_for_s) {
             return Some(PlanTrigger::PredictionChanged { target: index });
