@@ -160,6 +160,15 @@ impl PlanningProblem {
                     "is more than 1e8 m from the origin",
                 );
             }
+            if target
+                .holds_course_for_s
+                .is_some_and(|hold_s| !(0.0..=MAX_START_TIME_S).contains(&hold_s))
+            {
+                return bad(
+                    format!("targets[{index}].holds_course_for_s"),
+                    "must be a number of seconds from 0 to 1e12",
+                );
+            }
         }
         if !self.encounters.is_empty() && self.encounters.len() != self.targets.len() {
             return bad(

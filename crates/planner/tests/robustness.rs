@@ -282,3 +282,29 @@ fn largest_configuration_with_a_budget_returns() {
     let problem = PlanningProblem::new(own, DVec2::new(0.0, 3000.0), targets);
     assert_returns_quickly(&mut planner, &problem, 1);
 }
+
+/// A target's hold before it steers for its goal must be a finite,
+/// non-negative number of seconds: NaN, infinite or negative is named.
+#[test]
+fn a_bad_hold_is_refused_with_its_field() {
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let target = VesselState::new(DVec2::new(1000.0, 2000.0), 4.0, 5.0, 50.0);
+    let mut planner = Planner::new(tiny_config(50, false)).unwrap();
+    for hold_s in [f64::NAN, f64::INFINITY, -5.0] {
+        let mut holding =
+            TargetState::holding_course_then_toward_goal(target, DVec2::new(0.0, 5000.0), 60.0);
+        holding.holds_course_for_s = Some(hold_s);
+        let problem = PlanningProblem::new(own, DVec2::new(0.0, 3000.0), vec![holding]);
+        match planner.plan(&problem, 7) {
+            Err(PlannerError::InvalidProblem { field, .. }) => {
+                assert_eq!(field, "targets[0].holds_course_for_s");
+            }
+            other => panic!("expected InvalidProblem for {hold_s}, got {other:?}"),
+        }
+    }
+    // A valid hold plans.
+    let holding =
+        TargetState::holding_course_then_toward_goal(target, DVec2::new(0.0, 5000.0), 60.0);
+    let problem = PlanningProblem::new(own, DVec2::new(0.0, 3000.0), vec![holding]);
+    assert!(planner.plan(&problem, 7).is_ok());
+}
