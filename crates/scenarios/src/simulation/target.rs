@@ -212,7 +212,7 @@ impl SimulatedTarget {
                         ..vessel
                     };
                     let returns_after_s = (encounter == Some(Encounter::BeingOvertaken))
-                        .then(|| passing_time_s(own, &seen, encounter, rules))
+                        .then(|| passing_time_s(own, &seen, Encounter::BeingOvertaken, rules))
                         .flatten();
                     match returns_after_s {
                         Some(hold_s) => {
@@ -255,7 +255,7 @@ const PASSING_STEP_S: f64 = 5.0;
 
 /// Seconds until `target` has passed `own`, both holding their course and
 /// speed: as the rules judge passing ([`has_passed`], with the `encounter`
-/// between them; a crossing when none is latched), and, in an overtaking,
+/// between them), and, in an overtaking,
 /// with the overtaking vessel forward of the other's beam — the moment a
 /// vessel that holds its alteration "until the other vessel is finally past
 /// and clear" (rule 8(d)) is free to return to its route. `None` when they
@@ -264,10 +264,9 @@ const PASSING_STEP_S: f64 = 5.0;
 pub(super) fn passing_time_s(
     own: &VesselState,
     target: &VesselState,
-    encounter: Option<Encounter>,
+    encounter: Encounter,
     rules: &RuleParameters,
 ) -> Option<f64> {
-    let encounter = encounter.unwrap_or(Encounter::CrossingGiveWay);
     // Whether `ahead` is forward of `astern`'s beam.
     let forward_of_beam = |ahead: &VesselState, astern: &VesselState| {
         (ahead.position_m - astern.position_m).dot(astern.velocity_mps()) > 0.0
@@ -308,7 +307,7 @@ mod tests {
         // ahead (abeam after about 100 s).
         let own = vessel(0.0, 0.0, 0.0, 5.0);
         let overtaking = vessel(300.0, -500.0, 5.0, 10.0);
-        let passed_s = passing_time_s(&own, &overtaking, Some(Encounter::BeingOvertaken), &rules)
+        let passed_s = passing_time_s(&own, &overtaking, Encounter::BeingOvertaken, &rules)
             .expect("passes within the horizon");
         let (own_then, target_then) = (own.advanced(passed_s), overtaking.advanced(passed_s));
         assert!(
@@ -326,7 +325,7 @@ mod tests {
         // never gets past, and it is predicted on its course for ever.
         let falling_back = vessel(300.0, -500.0, 70.0, 10.0);
         assert_eq!(
-            passing_time_s(&own, &falling_back, Some(Encounter::BeingOvertaken), &rules),
+            passing_time_s(&own, &falling_back, Encounter::BeingOvertaken, &rules),
             None
         );
     }
