@@ -15,7 +15,7 @@
 //! | [`vorrt`] | [`Planner`]: Algorithms 1-2, seeded, restartable, bounded |
 //! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
 //! | [`validity`] | [`MotionValidator`]: the one validity check of a [`Leg`](vorrt_jfs::Leg), used by tree growth, simplification and a closed loop; [`EncounterState`] carried along a branch |
-//! | [`simplify`] | [`simplify`](simplify::simplify): a branch into the fewest sailable legs the same validator accepts |
+//! | [`simplify`] | [`simplify`](simplify::simplify): a branch into the fewest sailable legs the same validator accepts; [`hold_then_alter`](simplify::hold_then_alter): the manoeuvres of two alterations (keep the course, then act; alter, then resume) |
 //! | [`sampler`] | [`Sampler`](sampler::Sampler): ChaCha8 goal-biased sampling |
 //! | [`evasion`] | [`evasive_course`]: the course that keeps farthest from every target, for when no safe path is found |
 //! | [`plan`] | [`Plan`], [`Waypoint`], [`PlanStatistics`], [`RejectionCause`] |

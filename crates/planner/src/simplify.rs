@@ -26,6 +26,12 @@
 //! then the alterations to port. The branch is what is left when no such
 //! manoeuvre is valid, as among several vessels.
 //!
+//! From the planner's root, before any tree, where no single alteration
+//! held can be sailed, [`hold_then_alter`] tries the manoeuvres of two
+//! alterations: the present course kept, then one action (a stand-on
+//! vessel's, rule 17), and an alteration held, then the course held before
+//! it resumed.
+//!
 //! Every leg starts at the speed the one before ends at (the first at
 //! ownship's present speed) and changes speed toward its settled speed at
 //! the rate of [`Speeds`]: the leg to the goal, and the legs along the
@@ -165,9 +171,14 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
                 end_elapsed_s: elapsed_s,
                 state: state.clone(),
             };
-            if let Some((hold, back)) =
-                alter_hold_return(model, validator, &from, speeds, points[last])
-            {
+            if let Some((hold, back)) = alter_hold_return(
+                model,
+                validator,
+                &from,
+                speeds,
+                points[last],
+                MARINERS_ORDER,
+            ) {
                 legs.push(hold);
                 legs.push(back);
                 break;
@@ -184,13 +195,55 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
     Some(legs)
 }
 
+/// Which manoeuvres [`alter_hold_return`] tries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Alterations {
+    /// Holding on and the starboard alterations (smallest first) at service
+    /// speed, then the same at reduced speed, then the port alterations
+    /// likewise (the manoeuvre search of [`simplify`]).
+    Mariners,
+    /// As `Mariners` without holding on at service speed (after a hold of
+    /// the present course: holding on further is a longer first hold).
+    MarinersAfterHolding,
+    /// Back onto the course held before an alteration of this many degrees
+    /// (a return toward the route), at service speed.
+    Resume(i32),
+}
+
+/// [`Alterations::Mariners`], the order of the manoeuvre search.
+const MARINERS_ORDER: Alterations = Alterations::Mariners;
+
+impl Alterations {
+    /// The (alteration, speed factor) pairs, in order.
+    fn order(self) -> Vec<(f64, f64)> {
+        match self {
+            Self::Resume(deg) => vec![(-f64::from(deg), 1.0)],
+            Self::Mariners | Self::MarinersAfterHolding => {
+                let starboard = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
+                let port = ALTERATIONS_DEG.iter().filter(|deg| **deg < 0.0);
+                SPEED_FACTORS
+                    .iter()
+                    .flat_map(|factor| starboard.clone().map(move |deg| (*deg, *factor)))
+                    .chain(
+                        SPEED_FACTORS
+                            .iter()
+                            .flat_map(|factor| port.clone().map(move |deg| (*deg, *factor))),
+                    )
+                    .filter(|&(deg, factor)| {
+                        !(self == Self::MarinersAfterHolding && deg == 0.0 && factor == 1.0)
+                    })
+                    .collect()
+            }
+        }
+    }
+}
+
 /// From where `from` ends (at its end speed), the first manoeuvre of the
-/// form "turn onto the present course plus one of [`ALTERATIONS_DEG`] at one
-/// of [`SPEED_FACTORS`] of the service speed, hold it for one of
-/// [`HOLD_M`], then one leg to the goal at service speed" that the
-/// validator accepts: holding on and the starboard alterations (smallest
-/// first) at service speed, then the same at reduced speed, then the port
-/// alterations likewise; for each the shortest hold. The two legs, or `None`.
+/// form "turn onto the present course plus an alteration, at a fraction of
+/// the service speed, hold it for one of [`HOLD_M`], then one leg to the
+/// goal at service speed" that the validator accepts, trying the
+/// alterations and speeds of `alterations` in order and for each the
+/// shortest hold first. The two legs, or `None`.
 ///
 /// A reduced speed is held until it is reached (a speed change is readily
 /// apparent only once made: rule 8(b), half the speed) and until every
@@ -202,20 +255,11 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     from: &SimplifiedLeg,
     speeds: Speeds,
     goal_m: DVec2,
+    alterations: Alterations,
 ) -> Option<(SimplifiedLeg, SimplifiedLeg)> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
-    let starboard = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
-    let port = ALTERATIONS_DEG.iter().filter(|deg| **deg < 0.0);
-    let order = SPEED_FACTORS
-        .iter()
-        .flat_map(|factor| starboard.clone().map(move |deg| (*deg, *factor)))
-        .chain(
-            SPEED_FACTORS
-                .iter()
-                .flat_map(|factor| port.clone().map(move |deg| (*deg, *factor))),
-        );
-    for (alteration_deg, factor) in order {
+    for (alteration_deg, factor) in alterations.order() {
         let course_rad = pose.course_rad + alteration_deg.to_radians();
         let hold_speed_mps = factor * speeds.service_mps;
         for hold_m in HOLD_M {
@@ -257,6 +301,96 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                         state: after_back,
                     },
                 ));
+            }
+        }
+    }
+    None
+}
+
+/// The manoeuvres of two alterations, tried where one alteration held
+/// cannot be sailed: from `start` with `state` in force, a first course
+/// held for one of [`HOLD_M`] (shortest first), then a second course held,
+/// then a leg to the goal. Three legs, all accepted by `validator`, or
+/// `None`. In order:
+///
+/// - **Keep the course, then act**: the present course held at service
+///   speed, then any manoeuvre of the search of [`simplify`] (but holding on
+///   further, which is a longer first hold). A stand-on vessel keeps her
+///   course and speed (rule 17(a)(i)) until she may act, within the
+///   stand-on action range (17(a)(ii)), then takes such action as will best
+///   avoid collision (17(b)), to starboard first (17(c)); the shortest hold
+///   the validator accepts is the earliest action the rules allow.
+/// - **Alter, then resume**: each starboard alteration of
+///   [`ALTERATIONS_DEG`] (smallest first) held, then back onto the course
+///   held before it, held in turn: the alteration is held until the other
+///   vessel is past and clear (rule 8(d)), and the return toward the route
+///   waits until heading for the goal meets no one.
+///
+/// ```
+/// use vorrt_planner::simplify::{hold_then_alter, Speeds};
+/// use vorrt_planner::validity::EncounterState;
+/// use vorrt_planner::{safety::SafetyChecker, PlannerConfig};
+/// use vorrt_colregs::VesselState;
+/// use vorrt_jfs::{Pose, RateLimitedTurn};
+/// use glam::DVec2;
+/// let config = PlannerConfig::default();
+/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+/// let goal_m = DVec2::new(3000.0, 3000.0);
+/// let checker = SafetyChecker::new(&config, &[], own, goal_m, 0.0);
+/// let legs = hold_then_alter(
+///     &RateLimitedTurn { turn_radius_m: 300.0 },
+///     &checker,
+///     Pose { position_m: DVec2::ZERO, course_rad: 0.0 },
+///     Speeds::constant(6.0),
+///     goal_m,
+///     &EncounterState::default(),
+/// )
+/// .unwrap();
+/// // Nothing in the way: the course held for the shortest hold, then the
+/// // smallest alteration.
+/// assert_eq!(legs.len(), 3);
+/// assert!((legs[0].leg.end_m().y - 250.0).abs() < 1e-6);
+/// assert!((legs[2].leg.end_m() - goal_m).length() < 1e-6);
+/// ```
+pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
+    model: &M,
+    validator: &V,
+    start: Pose,
+    speeds: Speeds,
+    goal_m: DVec2,
+    state: &EncounterState,
+) -> Option<Vec<SimplifiedLeg>> {
+    let firsts = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
+    for &first_deg in firsts {
+        let second = if first_deg == 0.0 {
+            Alterations::MarinersAfterHolding
+        } else {
+            // Whole degrees (ALTERATIONS_DEG are).
+            Alterations::Resume(first_deg.round() as i32)
+        };
+        for hold_m in HOLD_M {
+            let hold = model
+                .turn_onto(
+                    start,
+                    start.course_rad + first_deg.to_radians(),
+                    speeds.service_mps,
+                    hold_m,
+                )
+                .from_speed(speeds.start_mps, speeds.change_mps2);
+            let mut after = state.clone();
+            if validator.validate(&hold, 0.0, &mut after).is_err() {
+                // Holding this far is already invalid: longer holds are too.
+                break;
+            }
+            let held = SimplifiedLeg {
+                end_elapsed_s: hold.duration_s(),
+                leg: hold,
+                state: after,
+            };
+            if let Some((alter, back)) =
+                alter_hold_return(model, validator, &held, speeds, goal_m, second)
+            {
+                return Some(vec![held, alter, back]);
             }
         }
     }

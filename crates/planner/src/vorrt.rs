@@ -20,7 +20,7 @@ use crate::problem::PlanningProblem;
 use crate::replay::{FailedSearch, Recording};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
-use crate::simplify::{SimplifiedLeg, Speeds, simplify_after};
+use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
@@ -422,8 +422,8 @@ impl Planner {
     /// instantaneous turns, else its simplification into sailable legs
     /// (`None` when there is none). For the root alone (`node` 0, short of
     /// the goal) with rate-limited turns, the manoeuvre search of
-    /// [`simplify`] from the start: one alteration held, then the goal.
-    /// Every leg the validity check refuses is counted in `refused`. With
+    /// [`simplify`] from the start: one alteration held, then the goal;
+    /// failing that, two alterations ([`hold_then_alter`]). Every leg the validity check refuses is counted in `refused`. With
     /// `root_searched`, the manoeuvre search from the root (at this
     /// planner's own settings) is known to fail ([`simplify_after`]). With
     /// `floor_first` the manoeuvre search from the root tries d_th before
@@ -499,7 +499,15 @@ impl Planner {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),
                 };
-                let mut search = |config: &PlannerConfig| {
+                let model = RateLimitedTurn::from_rate(own.speed_mps, rate);
+                let start = Pose {
+                    position_m: own.position_m,
+                    course_rad: own.course_rad,
+                };
+                // `hold_first`: the manoeuvre of a vessel that keeps her
+                // course before she acts (`hold_then_alter`), else one
+                // alteration held then the goal (or the branch).
+                let mut search = |config: &PlannerConfig, hold_first: bool| {
                     let checker = SafetyChecker::new(
                         config,
                         &self.tracks,
@@ -509,39 +517,54 @@ impl Planner {
                     )
                     .with_steady_course(problem.steady_course_rad);
                     let recording = Recording::new(&checker);
-                    let legs = simplify_after(
-                        &RateLimitedTurn::from_rate(own.speed_mps, rate),
-                        &recording,
-                        Pose {
-                            position_m: own.position_m,
-                            course_rad: own.course_rad,
-                        },
-                        speeds,
-                        &points,
-                        &root,
-                        root_searched && node != 0,
-                    );
+                    let legs = if hold_first {
+                        hold_then_alter(&model, &recording, start, speeds, problem.goal_m, &root)
+                    } else {
+                        simplify_after(
+                            &model,
+                            &recording,
+                            start,
+                            speeds,
+                            &points,
+                            &root,
+                            root_searched && node != 0,
+                        )
+                    };
                     refused.add(&recording.refused.get());
                     legs
                 };
-                // Every check that involves the clearance refuses a
-                // distance below it, so what is valid at the wider clearance
-                // is valid at d_th, and when no manoeuvre is valid at d_th
-                // none is at the wider one: the wider one is preferred, and
-                // the order of the two searches changes only their cost.
-                // Where the search is likely to fail (`floor_first`: a
-                // retry), d_th first spares the wider search; elsewhere the
-                // wider one first spares the search at d_th.
-                if node != 0 || self.config.preferred_clearance_factor <= 1.0 {
-                    search(&self.config)?
-                } else if floor_first {
-                    let floor = search(&self.config)?;
-                    search(&preferred).unwrap_or(floor)
+                if node != 0 {
+                    search(&self.config, false)?
                 } else {
-                    match search(&preferred) {
-                        Some(legs) => legs,
-                        None => search(&self.config)?,
+                    // From the root: one alteration held, then the goal;
+                    // failing that, the course held first and then one
+                    // alteration (a stand-on vessel's manoeuvre, rule 17),
+                    // before any tree. Every check that involves the
+                    // clearance refuses a distance below it, so what is
+                    // valid at the wider clearance is valid at d_th, and
+                    // when no manoeuvre is valid at d_th none is at the
+                    // wider one: the wider one is preferred, and the order
+                    // of the two searches of a shape changes only their
+                    // cost. Where the search is likely to fail
+                    // (`floor_first`: a retry), d_th first spares the wider
+                    // search; elsewhere the wider one first spares the
+                    // search at d_th.
+                    let mut found = None;
+                    for hold_first in [false, true] {
+                        found = if self.config.preferred_clearance_factor <= 1.0 {
+                            search(&self.config, hold_first)
+                        } else if floor_first {
+                            search(&self.config, hold_first)
+                                .map(|floor| search(&preferred, hold_first).unwrap_or(floor))
+                        } else {
+                            search(&preferred, hold_first)
+                                .or_else(|| search(&self.config, hold_first))
+                        };
+                        if found.is_some() {
+                            break;
+                        }
                     }
+                    found?
                 }
             }
         };

@@ -203,3 +203,74 @@ fn retries_search_the_first_phase_only_and_the_run_stays_safe() {
         evaluation.min_distance_m
     );
 }
+
+#[test]
+fn a_stand_on_vessel_holds_its_course_then_acts_from_the_first_plan() {
+    // Imazu 04: one vessel crossing from the port side, which keeps its
+    // course. The first plan keeps every rule, with no tree (no samples):
+    // the course held until the give-way vessel is within the stand-on
+    // action range, then one action (simplify::hold_then_alter). Before,
+    // no such plan was found until a retry 40 s in, and the first 40 s
+    // were sailed on a plan that broke rule 17(a)(i).
+    let scenario = fixture("imazu/imazu_04.ron");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let first = &record.plans[0];
+    assert_eq!(first.compliance, vorrt_planner::Compliance::Full);
+    assert_eq!(first.samples_drawn, 0, "found by the manoeuvre search");
+    assert!(
+        record
+            .plans
+            .iter()
+            .all(|event| event.compliance == vorrt_planner::Compliance::Full),
+        "a plan below full compliance was sailed"
+    );
+    let evaluation = evaluate(&scenario, &record);
+    assert!(evaluation.reached_goal && evaluation.clearance_kept);
+    assert_eq!(evaluation.targets[0].role, Role::StandOn);
+    assert!(
+        evaluation.compliant,
+        "{:?}",
+        evaluation.targets[0].violations
+    );
+    // Course and speed kept (within rule 17's tolerances) while the
+    // give-way vessel is beyond the action range.
+    let rules = scenario.planner_config().expect("valid").rules;
+    let own_start = record.ownship[0];
+    for (own, target) in record.ownship.iter().zip(&record.targets[0]) {
+        if own.position_m.distance(target.position_m) <= rules.stand_on_action_range_m {
+            break;
+        }
+        let turn = vorrt_geometry::angle::signed_turn(own_start.course_rad, own.course_rad);
+        assert!(
+            turn.abs() <= rules.stand_on_course_tolerance_rad,
+            "{}°",
+            turn.to_degrees()
+        );
+        assert!((own.speed_mps - own_start.speed_mps).abs() <= rules.stand_on_speed_tolerance_mps);
+    }
+}
+
+#[test]
+fn two_alterations_are_planned_where_one_cannot_be_sailed() {
+    // Imazu 17: overtaking a vessel ahead, another crossing from starboard,
+    // a third close on the port beam. No single alteration held, then the
+    // goal, keeps every rule; an alteration to starboard held until the
+    // others are past, then back onto the course held before, then the
+    // goal, does. Before, 14 retries over 265 s sailed a plan below full
+    // compliance until a tree found one.
+    let scenario = fixture("imazu/imazu_17.ron");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let first = &record.plans[0];
+    assert_eq!(first.compliance, vorrt_planner::Compliance::Full);
+    assert_eq!(first.samples_drawn, 0, "found by the manoeuvre search");
+    assert_eq!(first.waypoints.len(), 4, "three legs");
+    assert!(
+        !record
+            .plans
+            .iter()
+            .any(|event| event.trigger == PlanTrigger::Retry),
+        "no retry is needed"
+    );
+    let evaluation = evaluate(&scenario, &record);
+    assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
+}
