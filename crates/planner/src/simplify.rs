@@ -40,6 +40,7 @@
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
 use vorrt_colregs::Role;
+use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, MotionModel, Pose};
 
 /// When the next branch point cannot be reached by a valid leg, how many
@@ -262,7 +263,15 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     for (alteration_deg, factor) in alterations.order() {
         let course_rad = pose.course_rad + alteration_deg.to_radians();
         let hold_speed_mps = factor * speeds.service_mps;
-        for hold_m in HOLD_M {
+        let holds = if alterations == Alterations::Mariners {
+            HOLD_M.to_vec()
+        } else {
+            holds_short_of(
+                goal_m,
+                &model.turn_onto(pose, course_rad, hold_speed_mps, 0.0),
+            )
+        };
+        for hold_m in holds {
             let hold = model
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
                 .from_speed(start_mps, speeds.change_mps2);
@@ -310,8 +319,8 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 /// The manoeuvres of two alterations, tried where one alteration held
 /// cannot be sailed: from `start` with `state` in force, a first course
 /// held for one of [`HOLD_M`] (shortest first), then a second course held,
-/// then a leg to the goal. Three legs, all accepted by `validator`, or
-/// `None`. In order:
+/// then a leg to the goal. Neither hold ends past abeam of the goal
+/// (`holds_short_of`). Three legs, all accepted by `validator`, or `None`. In order:
 ///
 /// - **Keep the course, then act**: the present course held at service
 ///   speed, then any manoeuvre of the search of [`simplify`] (but holding on
@@ -368,14 +377,11 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
             // Whole degrees (ALTERATIONS_DEG are).
             Alterations::Resume(first_deg.round() as i32)
         };
-        for hold_m in HOLD_M {
+        let course_rad = start.course_rad + first_deg.to_radians();
+        let turn = model.turn_onto(start, course_rad, speeds.service_mps, 0.0);
+        for hold_m in holds_short_of(goal_m, &turn) {
             let hold = model
-                .turn_onto(
-                    start,
-                    start.course_rad + first_deg.to_radians(),
-                    speeds.service_mps,
-                    hold_m,
-                )
+                .turn_onto(start, course_rad, speeds.service_mps, hold_m)
                 .from_speed(speeds.start_mps, speeds.change_mps2);
             let mut after = state.clone();
             if validator.validate(&hold, 0.0, &mut after).is_err() {
@@ -395,6 +401,28 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
         }
     }
     None
+}
+
+/// The holds of [`HOLD_M`] after `turn` (a turn onto the course to hold,
+/// with no straight run) that end short of abeam of `goal_m`, then one that
+/// ends abeam of it, if any of [`HOLD_M`] would have gone past: a longer
+/// hold only sails farther from the goal. The holds of the two-alteration
+/// manoeuvres ([`hold_then_alter`]) are these; on a generated trafficgen
+/// situation (`scripts/peers/trafficgen_scenarios.py`, seed 11, 25 a
+/// kind, `03-CR-GW-CR-GW-HO`) the course resumed after an alteration was
+/// otherwise held 2.8 km past the goal, and the run ended, three times the
+/// straight route's duration later, short of it.
+fn holds_short_of(goal_m: DVec2, turn: &Leg) -> Vec<f64> {
+    let abeam_m = (goal_m - turn.turn_end_m()).dot(angle::course_to_unit(turn.course_rad));
+    let mut holds: Vec<f64> = HOLD_M
+        .iter()
+        .copied()
+        .filter(|hold_m| *hold_m < abeam_m)
+        .collect();
+    if holds.len() < HOLD_M.len() && abeam_m > 0.0 {
+        holds.push(abeam_m);
+    }
+    holds
 }
 
 /// Whether a hold at reduced speed has reached it and ends with no
@@ -504,6 +532,59 @@ mod tests {
                 Ok(())
             }
         }
+    }
+
+    /// Accepts holding the course north at 6 m/s, and any other leg only
+    /// from `from_north_m` on.
+    struct OnlyFarNorth {
+        from_north_m: f64,
+    }
+
+    impl MotionValidator for OnlyFarNorth {
+        fn validate(
+            &self,
+            leg: &Leg,
+            _start_elapsed_s: f64,
+            _state: &mut EncounterState,
+        ) -> Result<(), RejectionCause> {
+            let holding_north =
+                leg.turn_rad == 0.0 && leg.course_rad == 0.0 && leg.speed_mps == 6.0;
+            if holding_north || leg.start_m.y >= self.from_north_m {
+                Ok(())
+            } else {
+                Err(RejectionCause::Clearance)
+            }
+        }
+    }
+
+    #[test]
+    fn two_alterations_never_hold_a_course_past_the_goal() {
+        let model = RateLimitedTurn {
+            turn_radius_m: 300.0,
+        };
+        let start = Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 0.0,
+        };
+        let search = |goal_m: DVec2| {
+            hold_then_alter(
+                &model,
+                &OnlyFarNorth {
+                    from_north_m: 6000.0,
+                },
+                start,
+                Speeds::constant(6.0),
+                goal_m,
+                &EncounterState::default(),
+            )
+        };
+        // With the goal 8 km ahead, the course is held 6 km, then the
+        // smallest alteration, then the goal.
+        let legs = search(DVec2::new(500.0, 8000.0)).expect("a manoeuvre");
+        assert!((legs[0].leg.end_m().y - 6000.0).abs() < 1e-6);
+        // With the goal 4 km ahead, the only valid manoeuvre holds the
+        // course 2 km past it: none is offered.
+        assert!(search(DVec2::new(500.0, 4000.0)).is_none());
     }
 
     #[test]
