@@ -178,7 +178,7 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
                 &from,
                 speeds,
                 points[last],
-                MARINERS_ORDER,
+                Alterations::Mariners,
             ) {
                 legs.push(hold);
                 legs.push(back);
@@ -197,7 +197,7 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
 }
 
 /// Which manoeuvres [`alter_hold_return`] tries.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 enum Alterations {
     /// Holding on and the starboard alterations (smallest first) at service
     /// speed, then the same at reduced speed, then the port alterations
@@ -208,34 +208,44 @@ enum Alterations {
     MarinersAfterHolding,
     /// Back onto the course held before an alteration of this many degrees
     /// (a return toward the route), at service speed.
-    Resume(i32),
+    Resume(f64),
 }
-
-/// [`Alterations::Mariners`], the order of the manoeuvre search.
-const MARINERS_ORDER: Alterations = Alterations::Mariners;
 
 impl Alterations {
     /// The (alteration, speed factor) pairs, in order.
-    fn order(self) -> Vec<(f64, f64)> {
-        match self {
-            Self::Resume(deg) => vec![(-f64::from(deg), 1.0)],
-            Self::Mariners | Self::MarinersAfterHolding => {
-                let starboard = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
-                let port = ALTERATIONS_DEG.iter().filter(|deg| **deg < 0.0);
+    fn order(self) -> impl Iterator<Item = (f64, f64)> {
+        let resume = match self {
+            Self::Resume(alteration_deg) => Some((-alteration_deg, 1.0)),
+            _ => None,
+        };
+        let starboard = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
+        let port = ALTERATIONS_DEG.iter().filter(|deg| **deg < 0.0);
+        let mariners = SPEED_FACTORS
+            .iter()
+            .flat_map(move |factor| starboard.clone().map(move |deg| (*deg, *factor)))
+            .chain(
                 SPEED_FACTORS
                     .iter()
-                    .flat_map(|factor| starboard.clone().map(move |deg| (*deg, *factor)))
-                    .chain(
-                        SPEED_FACTORS
-                            .iter()
-                            .flat_map(|factor| port.clone().map(move |deg| (*deg, *factor))),
-                    )
-                    .filter(|&(deg, factor)| {
-                        !(self == Self::MarinersAfterHolding && deg == 0.0 && factor == 1.0)
-                    })
-                    .collect()
-            }
-        }
+                    .flat_map(move |factor| port.clone().map(move |deg| (*deg, *factor))),
+            )
+            .filter(move |&(deg, factor)| {
+                !(self == Self::MarinersAfterHolding && deg == 0.0 && factor == 1.0)
+            })
+            // A return is one course, not the search.
+            .take(if resume.is_some() { 0 } else { usize::MAX });
+        resume.into_iter().chain(mariners)
+    }
+
+    /// The holds tried on a course onto which `turn` turns (with no
+    /// straight run): those of [`HOLD_M`], and for the two-alteration
+    /// manoeuvres only those short of abeam of `goal_m` ([`holds_short_of`]).
+    fn holds(self, goal_m: DVec2, turn: impl FnOnce() -> Leg) -> impl Iterator<Item = f64> {
+        let abeam_m = if self == Self::Mariners {
+            f64::INFINITY
+        } else {
+            abeam_of(goal_m, &turn())
+        };
+        holds_short_of(abeam_m)
     }
 }
 
@@ -263,14 +273,9 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     for (alteration_deg, factor) in alterations.order() {
         let course_rad = pose.course_rad + alteration_deg.to_radians();
         let hold_speed_mps = factor * speeds.service_mps;
-        let holds = if alterations == Alterations::Mariners {
-            HOLD_M.to_vec()
-        } else {
-            holds_short_of(
-                goal_m,
-                &model.turn_onto(pose, course_rad, hold_speed_mps, 0.0),
-            )
-        };
+        let holds = alterations.holds(goal_m, || {
+            model.turn_onto(pose, course_rad, hold_speed_mps, 0.0)
+        });
         for hold_m in holds {
             let hold = model
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
@@ -320,7 +325,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 /// cannot be sailed: from `start` with `state` in force, a first course
 /// held for one of [`HOLD_M`] (shortest first), then a second course held,
 /// then a leg to the goal. Neither hold ends past abeam of the goal
-/// (`holds_short_of`). Three legs, all accepted by `validator`, or `None`. In order:
+/// ([`holds_short_of`]). Three legs, all accepted by `validator`, or `None`. In order:
 ///
 /// - **Keep the course, then act**: the present course held at service
 ///   speed, then any manoeuvre of the search of [`simplify`] (but holding on
@@ -374,12 +379,11 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
         let second = if first_deg == 0.0 {
             Alterations::MarinersAfterHolding
         } else {
-            // Whole degrees (ALTERATIONS_DEG are).
-            Alterations::Resume(first_deg.round() as i32)
+            Alterations::Resume(first_deg)
         };
         let course_rad = start.course_rad + first_deg.to_radians();
         let turn = model.turn_onto(start, course_rad, speeds.service_mps, 0.0);
-        for hold_m in holds_short_of(goal_m, &turn) {
+        for hold_m in holds_short_of(abeam_of(goal_m, &turn)) {
             let hold = model
                 .turn_onto(start, course_rad, speeds.service_mps, hold_m)
                 .from_speed(speeds.start_mps, speeds.change_mps2);
@@ -403,26 +407,30 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
     None
 }
 
-/// The holds of [`HOLD_M`] after `turn` (a turn onto the course to hold,
-/// with no straight run) that end short of abeam of `goal_m`, then one that
-/// ends abeam of it, if any of [`HOLD_M`] would have gone past: a longer
-/// hold only sails farther from the goal. The holds of the two-alteration
-/// manoeuvres ([`hold_then_alter`]) are these; on a generated trafficgen
-/// situation (`scripts/peers/trafficgen_scenarios.py`, seed 11, 25 a
-/// kind, `03-CR-GW-CR-GW-HO`) the course resumed after an alteration was
+/// How far along the course onto which `turn` turns (with no straight run)
+/// `goal_m` comes abeam, metres from the turn's end (negative: already
+/// abaft the beam).
+fn abeam_of(goal_m: DVec2, turn: &Leg) -> f64 {
+    (goal_m - turn.turn_end_m()).dot(angle::course_to_unit(turn.course_rad))
+}
+
+/// The holds of [`HOLD_M`] that end short of `abeam_m` (where the goal
+/// comes abeam), then one that ends abeam of it, if any of [`HOLD_M`] would
+/// have gone past: a longer hold only sails farther from the goal. The
+/// holds of the two-alteration manoeuvres ([`hold_then_alter`]) are these;
+/// on a generated trafficgen situation
+/// (`scripts/peers/trafficgen_scenarios.py`, seed 11, 25 a kind,
+/// `03-CR-GW-CR-GW-HO`) the course resumed after an alteration was
 /// otherwise held 2.8 km past the goal, and the run ended, three times the
 /// straight route's duration later, short of it.
-fn holds_short_of(goal_m: DVec2, turn: &Leg) -> Vec<f64> {
-    let abeam_m = (goal_m - turn.turn_end_m()).dot(angle::course_to_unit(turn.course_rad));
-    let mut holds: Vec<f64> = HOLD_M
+fn holds_short_of(abeam_m: f64) -> impl Iterator<Item = f64> {
+    let longest_m = HOLD_M[HOLD_M.len() - 1];
+    let abeam = (abeam_m > 0.0 && abeam_m <= longest_m).then_some(abeam_m);
+    HOLD_M
         .iter()
         .copied()
-        .filter(|hold_m| *hold_m < abeam_m)
-        .collect();
-    if holds.len() < HOLD_M.len() && abeam_m > 0.0 {
-        holds.push(abeam_m);
-    }
-    holds
+        .take_while(move |hold_m| *hold_m < abeam_m)
+        .chain(abeam)
 }
 
 /// Whether a hold at reduced speed has reached it and ends with no

@@ -423,7 +423,8 @@ impl Planner {
     /// (`None` when there is none). For the root alone (`node` 0, short of
     /// the goal) with rate-limited turns, the manoeuvre search of
     /// [`simplify`] from the start: one alteration held, then the goal;
-    /// failing that, two alterations ([`hold_then_alter`]). Every leg the validity check refuses is counted in `refused`. With
+    /// failing that, two alterations ([`hold_then_alter`]). Every leg the
+    /// validity check refuses is counted in `refused`. With
     /// `root_searched`, the manoeuvre search from the root (at this
     /// planner's own settings) is known to fail ([`simplify_after`]). With
     /// `floor_first` the manoeuvre search from the root tries d_th before
