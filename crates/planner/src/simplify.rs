@@ -324,8 +324,9 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 /// The manoeuvres of two alterations, tried where one alteration held
 /// cannot be sailed: from `start` with `state` in force, a first course
 /// held for one of [`HOLD_M`] (shortest first), then a second course held,
-/// then a leg to the goal. Neither hold ends past abeam of the goal
-/// ([`holds_short_of`]). Three legs, all accepted by `validator`, or `None`. In order:
+/// then a leg to the goal. Neither hold ends past abeam of the goal: the
+/// holds of [`HOLD_M`] that would are replaced by one that ends abeam of
+/// it. Three legs, all accepted by `validator`, or `None`. In order:
 ///
 /// - **Keep the course, then act**: the present course held at service
 ///   speed, then any manoeuvre of the search of [`simplify`] (but holding on
