@@ -256,50 +256,9 @@ pub struct StatisticsOutput {
     pub restarts: u64,
     /// Wall-clock planning time, seconds.
     pub planning_time_s: f64,
-    /// Rejected samples by cause.
-    pub rejections: RejectionsOutput,
-}
-
-/// Rejected samples by cause.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct RejectionsOutput {
-    /// In a target's velocity obstacle.
-    pub velocity_obstacle: u64,
-    /// A target within `d_th` during the segment.
-    pub clearance: u64,
-    /// A target in an encounter in force within `d_th` after the segment.
-    pub clearance_ahead: u64,
-    /// A turn to port (rules 14, 15).
-    pub port_turn: u64,
-    /// Passing starboard to starboard head-on (rule 14).
-    pub starboard_passing: u64,
-    /// Crossing ahead of a stand-on vessel (rule 15).
-    pub crossing_ahead: u64,
-    /// A course change while standing on (rule 17(a)(i)).
-    pub stand_on_course_change: u64,
-    /// A speed change while standing on (rule 17(a)(i)).
-    pub stand_on_speed_change: u64,
-    /// A port turn for a vessel on the port side (rule 17(c)).
-    pub port_turn_for_port_vessel: u64,
-    /// A give-way alteration too small to be readily apparent (rules 8(b), 16).
-    pub insufficient_alteration: u64,
-}
-
-impl From<&RejectionCounts> for RejectionsOutput {
-    fn from(counts: &RejectionCounts) -> Self {
-        Self {
-            velocity_obstacle: counts.velocity_obstacle,
-            clearance: counts.clearance,
-            clearance_ahead: counts.clearance_ahead,
-            port_turn: counts.port_turn,
-            starboard_passing: counts.starboard_passing,
-            crossing_ahead: counts.crossing_ahead,
-            stand_on_course_change: counts.stand_on_course_change,
-            stand_on_speed_change: counts.stand_on_speed_change,
-            port_turn_for_port_vessel: counts.port_turn_for_port_vessel,
-            insufficient_alteration: counts.insufficient_alteration,
-        }
-    }
+    /// Rejected samples, one count per cause of the planner's validity
+    /// check (`vorrt_planner::RejectionCause::ALL`, named by its key).
+    pub rejections: RejectionCounts,
 }
 
 impl From<&PlanStatistics> for StatisticsOutput {
@@ -309,7 +268,7 @@ impl From<&PlanStatistics> for StatisticsOutput {
             samples: statistics.samples,
             restarts: statistics.restarts,
             planning_time_s: statistics.elapsed_s,
-            rejections: RejectionsOutput::from(&statistics.rejections),
+            rejections: statistics.rejections,
         }
     }
 }

@@ -4,6 +4,7 @@ use crate::error::PlannerError;
 use crate::plan::RejectionCause;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::RuleParameters;
+use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn};
 
 /// How the nearest tree node to a sample is found.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -56,6 +57,33 @@ impl Turning {
             } => Some(max_turn_rate_rad_s),
         }
     }
+
+    /// How ownship (`length_m`, service speed `speed_mps`) sails: the one
+    /// place a [`Turning`] becomes a motion model, for the planner's plans,
+    /// the closed loop that sails them and the evasive fallback alike. A
+    /// rate-limited turn at [`max_turn_rate_rad_s`](Self::max_turn_rate_rad_s),
+    /// or, for `Instant`, a change of course at once of any size (the plan's
+    /// legs then carry the tree's bounded steps).
+    ///
+    /// ```
+    /// use vorrt_planner::Turning;
+    /// use vorrt_jfs::OwnshipModel;
+    /// // A 300 m ship at 6 m/s turns on 3 lengths (0.38°/s).
+    /// let OwnshipModel::RateLimited(model) = Turning::FromLength.ownship_model(300.0, 6.0) else {
+    ///     panic!("a rate of turn");
+    /// };
+    /// assert!((model.turn_radius_m - 900.0).abs() < 1e-6);
+    /// assert!(matches!(Turning::Instant.ownship_model(300.0, 6.0), OwnshipModel::Instant(_)));
+    /// ```
+    #[must_use]
+    pub fn ownship_model(self, length_m: f64, speed_mps: f64) -> OwnshipModel {
+        match self.max_turn_rate_rad_s(length_m, speed_mps) {
+            Some(rate) => OwnshipModel::RateLimited(RateLimitedTurn::from_rate(speed_mps, rate)),
+            None => OwnshipModel::Instant(InstantTurn {
+                max_turn_rad: std::f64::consts::PI,
+            }),
+        }
+    }
 }
 
 /// Which COLREGs duties the planner's validity check enforces: all of them,
@@ -104,7 +132,8 @@ impl Compliance {
         match cause {
             RejectionCause::VelocityObstacle
             | RejectionCause::Clearance
-            | RejectionCause::ClearanceAhead => true,
+            | RejectionCause::ClearanceAhead
+            | RejectionCause::Constraint(_) => true,
             RejectionCause::Colregs(InsufficientAlteration | LateAction | AlterationNotHeld) => {
                 self == Compliance::Full
             }

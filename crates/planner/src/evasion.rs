@@ -16,6 +16,7 @@
 //! (`PlannerConfig::speed_change_rate_mps2`) and, once stopped, lies still
 //! to the horizon's end.
 
+use crate::constraint::{Constraint, NoConstraint, Segment};
 use crate::problem::PlanningProblem;
 use crate::safety::min_distance_over;
 use glam::DVec2;
@@ -172,6 +173,50 @@ pub fn evasive_leg_holding<M: MotionModel>(
     speed_change_mps2: f64,
     holding: Option<EvasiveManeuver>,
 ) -> (Leg, EvasiveManeuver) {
+    let search = EvasionSearch {
+        horizon_s,
+        courses,
+        clearance_m,
+        model,
+        speed_change_mps2,
+    };
+    evasive_leg_constrained(problem, &search, holding, &NoConstraint)
+}
+
+/// What the evasive manoeuvre searches: how far ahead it judges, among how
+/// many courses, for which clearance, sailed how.
+#[derive(Debug, Clone, Copy)]
+pub struct EvasionSearch<'a, M> {
+    /// How far ahead each course and speed is judged, seconds.
+    pub horizon_s: f64,
+    /// How many evenly spaced courses are tried (72: every 5°).
+    pub courses: usize,
+    /// The distance between hulls a course must keep from every target to
+    /// be taken at once, metres.
+    pub clearance_m: f64,
+    /// How ownship turns.
+    pub model: &'a M,
+    /// How fast ownship changes speed, m/s².
+    pub speed_change_mps2: f64,
+}
+
+/// As [`evasive_leg_holding`], among the legs that keep `constraint` (land,
+/// a no-go area: every piece of the leg sailed is checked as the validity
+/// check does); only when none does, the best of all.
+#[must_use]
+pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
+    problem: &PlanningProblem,
+    search: &EvasionSearch<'_, M>,
+    holding: Option<EvasiveManeuver>,
+    constraint: &C,
+) -> (Leg, EvasiveManeuver) {
+    let EvasionSearch {
+        horizon_s,
+        courses,
+        clearance_m,
+        model,
+        speed_change_mps2,
+    } = *search;
     let own = problem.ownship;
     let service_mps = problem.service_speed_mps();
     let from = Pose {
@@ -231,6 +276,29 @@ pub fn evasive_leg_holding<M: MotionModel>(
         };
         sailed.min(lying)
     };
+    // Whether the leg keeps the user's constraint along the curve sailed.
+    let admitted = |leg: &Leg| {
+        let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
+        leg.pieces(0.0).all(|piece| {
+            let margin_m = if piece.turning {
+                piece_error_m
+            } else if piece.transient() {
+                timing_error_m
+            } else {
+                0.0
+            };
+            constraint
+                .check_segment(&Segment {
+                    start_m: piece.start_m,
+                    end_m: piece.end_m(),
+                    margin_m,
+                    start_elapsed_s: piece.elapsed_s,
+                    duration_s: piece.duration_s,
+                    course_rad: piece.course_rad,
+                })
+                .is_ok()
+        })
+    };
     let courses = courses.max(1);
     let spacing = std::f64::consts::TAU / courses as f64;
     // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
@@ -248,11 +316,16 @@ pub fn evasive_leg_holding<M: MotionModel>(
             min_distance_m: keep(&leg),
             ..holding
         };
-        if maneuver.min_distance_m >= clearance_m {
-            return (leg, maneuver);
+        if admitted(&leg) {
+            if maneuver.min_distance_m >= clearance_m {
+                return (leg, maneuver);
+            }
+            held = Some((leg, maneuver));
         }
-        held = Some((leg, maneuver));
     }
+    // The farthest-keeping leg that keeps the constraint, and the
+    // farthest-keeping of all (taken only when no leg keeps it).
+    let mut refused: Option<(Leg, EvasiveManeuver)> = None;
     let mut best: Option<(Leg, EvasiveManeuver)> = None;
     for factor in EVASION_SPEED_FACTORS {
         let speed_mps = factor * service_mps;
@@ -265,6 +338,15 @@ pub fn evasive_leg_holding<M: MotionModel>(
                 speed_mps,
                 min_distance_m,
             };
+            if !admitted(&leg) {
+                if refused
+                    .as_ref()
+                    .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
+                {
+                    refused = Some((leg, maneuver));
+                }
+                continue;
+            }
             if min_distance_m >= clearance_m {
                 return (leg, maneuver);
             }
@@ -283,7 +365,7 @@ pub fn evasive_leg_holding<M: MotionModel>(
     {
         return (leg, maneuver);
     }
-    best.unwrap_or_else(|| {
+    best.or(refused).unwrap_or_else(|| {
         let leg = leg_for(own.course_rad, service_mps);
         let maneuver = EvasiveManeuver {
             course_rad: own.course_rad,

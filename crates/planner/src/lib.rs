@@ -11,6 +11,7 @@
 //! | module | what it gives |
 //! |---|---|
 //! | [`config`] | [`PlannerConfig`]: `d'`, `d_th`, goal bias, node and sample budgets, turn bound, deadline; validated |
+//! | [`constraint`] | [`Constraint`]: the seam for land, no-go areas and lanes, kept by every check of ownship's motion and by the sampler; [`NoConstraint`] |
 //! | [`problem`] | [`PlanningProblem`]: ownship, goal, targets and the encounters in force |
 //! | [`vorrt`] | [`Planner`]: Algorithms 1-2, seeded, restartable, bounded |
 //! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
@@ -22,7 +23,15 @@
 //! | [`error`] | [`PlannerError`] |
 #![forbid(missing_docs)]
 
+// What the planner's signatures take and return, so that a user needs only
+// this crate in `[dependencies]`.
+pub use glam;
+pub use vorrt_colregs as colregs;
+pub use vorrt_geometry as geometry;
+pub use vorrt_jfs as jfs;
+
 pub mod config;
+pub mod constraint;
 pub mod error;
 pub mod evasion;
 pub mod plan;
@@ -36,11 +45,13 @@ pub mod validity;
 pub mod vorrt;
 
 pub use config::{Compliance, NearestIndex, PlannerConfig, SearchEffort, Turning};
+pub use constraint::{Constraint, ConstraintViolation, NoConstraint, Segment};
 pub use error::PlannerError;
 pub use evasion::{
-    EVASION_HOLD_MARGIN_M, EvasiveManeuver, evasive_course, evasive_leg, evasive_leg_holding,
+    EVASION_HOLD_MARGIN_M, EvasionSearch, EvasiveManeuver, evasive_course, evasive_leg,
+    evasive_leg_constrained, evasive_leg_holding,
 };
 pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
-pub use validity::{EncounterState, MotionValidator, check_legs};
+pub use validity::{EncounterState, MotionValidator, check_legs, check_legs_with};
 pub use vorrt::Planner;

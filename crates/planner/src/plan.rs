@@ -1,6 +1,7 @@
 //! What the planner returns: waypoints with times, the predicted targets along
 //! them, and statistics of the search.
 
+use crate::constraint::ConstraintViolation;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::{EncounterLatch, ManeuverViolation, VesselState};
@@ -18,7 +19,9 @@ pub struct Waypoint {
     pub course_rad: f64,
 }
 
-/// Why a sample was not added to the tree.
+/// Why a sample was not added to the tree: the one list of the validity
+/// check's verdicts, from which every count, report and message is derived
+/// ([`RejectionCause::ALL`], [`RejectionCounts`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum RejectionCause {
@@ -31,9 +34,90 @@ pub enum RejectionCause {
     ClearanceAhead,
     /// The move breaks a COLREGs rule for an encounter in force.
     Colregs(ManeuverViolation),
+    /// The move breaks a user constraint (land, a no-go area, a lane:
+    /// [`Constraint`](crate::constraint::Constraint)).
+    Constraint(ConstraintViolation),
 }
 
+/// How many causes [`RejectionCause::ALL`] lists.
+const CAUSES: usize = 3 + ManeuverViolation::ALL.len() + ConstraintViolation::ALL.len();
+
 impl RejectionCause {
+    /// Every cause, in a fixed order: the safety checks, the COLREGs
+    /// duties ([`ManeuverViolation::ALL`]), then the user constraints
+    /// ([`ConstraintViolation::ALL`]).
+    pub const ALL: [RejectionCause; CAUSES] = {
+        let mut all = [RejectionCause::VelocityObstacle; CAUSES];
+        all[1] = RejectionCause::Clearance;
+        all[2] = RejectionCause::ClearanceAhead;
+        let mut index = 0;
+        while index < ManeuverViolation::ALL.len() {
+            all[3 + index] = RejectionCause::Colregs(ManeuverViolation::ALL[index]);
+            index += 1;
+        }
+        let mut index = 0;
+        while index < ConstraintViolation::ALL.len() {
+            all[3 + ManeuverViolation::ALL.len() + index] =
+                RejectionCause::Constraint(ConstraintViolation::ALL[index]);
+            index += 1;
+        }
+        all
+    };
+
+    /// Its place in [`ALL`](Self::ALL).
+    fn index(self) -> usize {
+        match self {
+            RejectionCause::VelocityObstacle => 0,
+            RejectionCause::Clearance => 1,
+            RejectionCause::ClearanceAhead => 2,
+            RejectionCause::Colregs(violation) => {
+                3 + ManeuverViolation::ALL
+                    .iter()
+                    .position(|candidate| *candidate == violation)
+                    .unwrap_or_default()
+            }
+            RejectionCause::Constraint(violation) => {
+                3 + ManeuverViolation::ALL.len()
+                    + ConstraintViolation::ALL
+                        .iter()
+                        .position(|candidate| *candidate == violation)
+                        .unwrap_or_default()
+            }
+        }
+    }
+
+    /// Its name in files (`report.json`'s and the plan output's
+    /// `rejections`, batch rows): snake case, the rule's name for a COLREGs
+    /// duty, the constraint's for a constraint.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            RejectionCause::VelocityObstacle => "velocity_obstacle",
+            RejectionCause::Clearance => "clearance",
+            RejectionCause::ClearanceAhead => "clearance_ahead",
+            RejectionCause::Colregs(violation) => match violation {
+                ManeuverViolation::PortTurn => "port_turn",
+                ManeuverViolation::StarboardPassing => "starboard_passing",
+                ManeuverViolation::CrossingAhead => "crossing_ahead",
+                ManeuverViolation::StandOnCourseChange => "stand_on_course_change",
+                ManeuverViolation::StandOnSpeedChange => "stand_on_speed_change",
+                ManeuverViolation::PortTurnForPortVessel => "port_turn_for_port_vessel",
+                ManeuverViolation::InsufficientAlteration => "insufficient_alteration",
+                ManeuverViolation::LateAction => "late_action",
+                ManeuverViolation::AlterationNotHeld => "alteration_not_held",
+            },
+            RejectionCause::Constraint(violation) => violation.key(),
+        }
+    }
+
+    /// The cause whose [`key`](Self::key) is `key`.
+    #[must_use]
+    pub fn from_key(key: &str) -> Option<RejectionCause> {
+        RejectionCause::ALL
+            .into_iter()
+            .find(|cause| cause.key() == key)
+    }
+
     /// A short description, for messages.
     #[must_use]
     pub fn description(self) -> String {
@@ -46,133 +130,65 @@ impl RejectionCause {
                 "clearance d_th broken after the segment (encounter in force)".into()
             }
             RejectionCause::Colregs(violation) => format!("COLREGs: {violation}"),
+            RejectionCause::Constraint(violation) => format!("constraint: {violation}"),
         }
     }
 }
 
-/// Rejected samples, counted by cause.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+/// Rejected samples, counted by cause ([`RejectionCause::ALL`]). In files
+/// it is an object with one count per cause, named by
+/// [`RejectionCause::key`]; a cause missing when read counts 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RejectionCounts {
-    /// Rejected by a velocity obstacle.
-    pub velocity_obstacle: u64,
-    /// Rejected for breaking `d_th` during the segment.
-    pub clearance: u64,
-    /// Rejected for breaking `d_th` after the segment.
-    pub clearance_ahead: u64,
-    /// Rejected for a turn to port (rules 14, 15).
-    pub port_turn: u64,
-    /// Rejected for passing starboard to starboard in head-on (rule 14).
-    pub starboard_passing: u64,
-    /// Rejected for crossing ahead of a stand-on vessel (rule 15).
-    pub crossing_ahead: u64,
-    /// Rejected for a stand-on course change (rule 17(a)(i)).
-    pub stand_on_course_change: u64,
-    /// Rejected for a stand-on speed change (rule 17(a)(i)).
-    pub stand_on_speed_change: u64,
-    /// Rejected for a port turn for a vessel on the port side (rule 17(c)).
-    pub port_turn_for_port_vessel: u64,
-    /// Rejected for a give-way alteration too small to be apparent (rules 8(b), 16).
-    pub insufficient_alteration: u64,
-    /// Rejected for holding course at risk within the give-way action range (rules 8(a), 16).
-    #[serde(default)]
-    pub late_action: u64,
-    /// Rejected for easing back from the alteration before the target is past (rule 8(d)).
-    #[serde(default)]
-    pub alteration_not_held: u64,
+    counts: [u64; CAUSES],
+}
+
+impl Default for RejectionCounts {
+    fn default() -> Self {
+        Self {
+            counts: [0; CAUSES],
+        }
+    }
 }
 
 impl RejectionCounts {
     /// Counts one rejection.
     pub fn record(&mut self, cause: RejectionCause) {
-        *self.slot(cause) += 1;
+        self.counts[cause.index()] += 1;
     }
 
-    fn slot(&mut self, cause: RejectionCause) -> &mut u64 {
-        match cause {
-            RejectionCause::VelocityObstacle => &mut self.velocity_obstacle,
-            RejectionCause::Clearance => &mut self.clearance,
-            RejectionCause::ClearanceAhead => &mut self.clearance_ahead,
-            RejectionCause::Colregs(ManeuverViolation::PortTurn) => &mut self.port_turn,
-            RejectionCause::Colregs(ManeuverViolation::StarboardPassing) => {
-                &mut self.starboard_passing
-            }
-            RejectionCause::Colregs(ManeuverViolation::CrossingAhead) => &mut self.crossing_ahead,
-            RejectionCause::Colregs(ManeuverViolation::StandOnCourseChange) => {
-                &mut self.stand_on_course_change
-            }
-            RejectionCause::Colregs(ManeuverViolation::StandOnSpeedChange) => {
-                &mut self.stand_on_speed_change
-            }
-            RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel) => {
-                &mut self.port_turn_for_port_vessel
-            }
-            RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration) => {
-                &mut self.insufficient_alteration
-            }
-            RejectionCause::Colregs(ManeuverViolation::LateAction) => &mut self.late_action,
-            RejectionCause::Colregs(ManeuverViolation::AlterationNotHeld) => {
-                &mut self.alteration_not_held
-            }
-        }
+    /// The rejections counted for `cause`.
+    #[must_use]
+    pub fn get(&self, cause: RejectionCause) -> u64 {
+        self.counts[cause.index()]
+    }
+
+    /// Sets the count of `cause`.
+    pub fn set(&mut self, cause: RejectionCause, count: u64) {
+        self.counts[cause.index()] = count;
     }
 
     /// Adds every count of `other`.
     pub fn add(&mut self, other: &RejectionCounts) {
-        for (cause, count) in other.by_cause() {
-            *self.slot(cause) += count;
+        for (mine, theirs) in self.counts.iter_mut().zip(other.counts) {
+            *mine += theirs;
         }
     }
 
-    /// Every cause with its count, in a fixed order.
+    /// Every cause with its count, in the order of [`RejectionCause::ALL`].
     #[must_use]
-    pub fn by_cause(&self) -> [(RejectionCause, u64); 12] {
-        [
-            (RejectionCause::VelocityObstacle, self.velocity_obstacle),
-            (RejectionCause::Clearance, self.clearance),
-            (RejectionCause::ClearanceAhead, self.clearance_ahead),
-            (
-                RejectionCause::Colregs(ManeuverViolation::PortTurn),
-                self.port_turn,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::StarboardPassing),
-                self.starboard_passing,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::CrossingAhead),
-                self.crossing_ahead,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::StandOnCourseChange),
-                self.stand_on_course_change,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::StandOnSpeedChange),
-                self.stand_on_speed_change,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::PortTurnForPortVessel),
-                self.port_turn_for_port_vessel,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::InsufficientAlteration),
-                self.insufficient_alteration,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::LateAction),
-                self.late_action,
-            ),
-            (
-                RejectionCause::Colregs(ManeuverViolation::AlterationNotHeld),
-                self.alteration_not_held,
-            ),
-        ]
+    pub fn by_cause(&self) -> [(RejectionCause, u64); CAUSES] {
+        let mut all = [(RejectionCause::VelocityObstacle, 0); CAUSES];
+        for ((slot, cause), count) in all.iter_mut().zip(RejectionCause::ALL).zip(self.counts) {
+            *slot = (cause, count);
+        }
+        all
     }
 
     /// All rejections.
     #[must_use]
     pub fn total(&self) -> u64 {
-        self.by_cause().iter().map(|(_, count)| count).sum()
+        self.counts.iter().sum()
     }
 
     /// The cause that rejected most samples, if any sample was rejected.
@@ -189,16 +205,51 @@ impl RejectionCounts {
     #[must_use]
     pub fn dominant_cause_text(&self) -> String {
         match self.dominant_cause() {
-            Some(cause) => {
-                let count = self
-                    .by_cause()
-                    .into_iter()
-                    .find(|(c, _)| *c == cause)
-                    .map_or(0, |(_, n)| n);
-                format!("{} ({count} of {})", cause.description(), self.total())
-            }
+            Some(cause) => format!(
+                "{} ({} of {})",
+                cause.description(),
+                self.get(cause),
+                self.total()
+            ),
             None => "nothing (no sample was rejected; the node or sample budget ran out)".into(),
         }
+    }
+}
+
+impl Serialize for RejectionCounts {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = serializer.serialize_map(Some(CAUSES))?;
+        for (cause, count) in self.by_cause() {
+            map.serialize_entry(cause.key(), &count)?;
+        }
+        map.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for RejectionCounts {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Counts;
+        impl<'de> serde::de::Visitor<'de> for Counts {
+            type Value = RejectionCounts;
+            fn expecting(&self, formatter: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                formatter.write_str("a count per rejection cause")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> Result<RejectionCounts, A::Error> {
+                let mut counts = RejectionCounts::default();
+                while let Some(key) = map.next_key::<String>()? {
+                    let Some(cause) = RejectionCause::from_key(&key) else {
+                        return Err(serde::de::Error::unknown_field(&key, &[]));
+                    };
+                    counts.counts[cause.index()] = map.next_value()?;
+                }
+                Ok(counts)
+            }
+        }
+        deserializer.deserialize_map(Counts)
     }
 }
 
@@ -329,5 +380,59 @@ impl Plan {
             }
         }
         anticipated
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_cause_has_its_own_place_and_key() {
+        for (index, cause) in RejectionCause::ALL.into_iter().enumerate() {
+            assert_eq!(cause.index(), index, "{cause:?}");
+            assert_eq!(RejectionCause::from_key(cause.key()), Some(cause));
+        }
+        let keys: std::collections::HashSet<_> = RejectionCause::ALL
+            .iter()
+            .map(|cause| cause.key())
+            .collect();
+        assert_eq!(keys.len(), RejectionCause::ALL.len());
+    }
+
+    #[test]
+    fn counts_are_written_by_key_and_read_back() {
+        let mut counts = RejectionCounts::default();
+        for (times, cause) in RejectionCause::ALL.into_iter().enumerate() {
+            for _ in 0..times {
+                counts.record(cause);
+            }
+        }
+        let json = serde_json::to_string(&counts).unwrap();
+        assert!(
+            json.starts_with(r#"{"velocity_obstacle":0,"clearance":1,"#),
+            "{json}"
+        );
+        assert!(json.contains(r#""late_action":"#) && json.contains(r#""land":"#));
+        let back: RejectionCounts = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, counts);
+        assert_eq!(counts.dominant_cause(), RejectionCause::ALL.last().copied());
+        // A cause missing when read counts 0; an unknown one is an error.
+        let partial: RejectionCounts = serde_json::from_str(r#"{"clearance":4}"#).unwrap();
+        assert_eq!(partial.get(RejectionCause::Clearance), 4);
+        assert_eq!(partial.total(), 4);
+        assert!(serde_json::from_str::<RejectionCounts>(r#"{"sea_monster":1}"#).is_err());
+    }
+
+    #[test]
+    fn added_counts_sum_per_cause() {
+        let mut a = RejectionCounts::default();
+        a.record(RejectionCause::Clearance);
+        let mut b = RejectionCounts::default();
+        b.record(RejectionCause::Clearance);
+        b.record(RejectionCause::Constraint(ConstraintViolation::Land));
+        a.add(&b);
+        assert_eq!(a.get(RejectionCause::Clearance), 2);
+        assert_eq!(a.total(), 3);
     }
 }

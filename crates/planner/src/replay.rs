@@ -100,6 +100,7 @@ impl<V: MotionValidator> MotionValidator for Recording<'_, V> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use vorrt_colregs::ManeuverViolation;
 
     #[test]
     fn only_a_weaker_or_equal_level_can_repeat_a_search() {
@@ -129,15 +130,19 @@ mod tests {
             effort: SearchEffort::Full,
             refused: RejectionCounts::default(),
         };
-        failed.refused.clearance = 10;
-        failed.refused.port_turn = 3;
+        failed.refused.set(RejectionCause::Clearance, 10);
+        failed
+            .refused
+            .set(RejectionCause::Colregs(ManeuverViolation::PortTurn), 3);
         let repeats = |failed: &FailedSearch, compliance| {
             failed.repeated_by(&problem, &at(compliance), 1, SearchEffort::Full)
         };
         assert!(repeats(&failed, Compliance::Directions));
         // Safety only drops the port-turn duty.
         assert!(!repeats(&failed, Compliance::SafetyOnly));
-        failed.refused.late_action = 1;
+        failed
+            .refused
+            .set(RejectionCause::Colregs(ManeuverViolation::LateAction), 1);
         assert!(!repeats(&failed, Compliance::Directions));
         assert!(repeats(&failed, Compliance::Full));
         // Any other setting: another search.

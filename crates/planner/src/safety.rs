@@ -24,6 +24,7 @@
 //! apply to them; rule 17(c) still forbids a port turn for a port-side vessel).
 
 use crate::config::{Compliance, PlannerConfig};
+use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::rules::{acting_for_any, may_act};
@@ -116,28 +117,26 @@ pub struct Move {
     pub duration_s: f64,
 }
 
-/// Checks moves against the targets of one problem.
+/// Checks moves against the targets of one problem, and against a user
+/// [`Constraint`] (none by default: [`NoConstraint`]).
 #[derive(Debug)]
-pub struct SafetyChecker<'a> {
-    /// The planner's settings.
-    pub config: &'a PlannerConfig,
-    /// Each target's predicted motion from the plan's start.
-    pub tracks: &'a [LinearTrack],
-    /// Ownship at the plan's start, at its service speed (its length holds
-    /// along the plan; each move carries its own velocity).
-    pub ownship: VesselState,
-    /// Where ownship is bound.
-    pub goal_m: DVec2,
-    /// The clock at the plan's start, seconds (time stamps of new latches).
-    pub start_time_s: f64,
-    /// The course ownship held steadily before the turn it is in at the
-    /// plan's start (`PlanningProblem::steady_course_rad`), radians; its
-    /// present course when it is not turning.
-    pub steady_course_rad: f64,
+pub struct SafetyChecker<'a, C = NoConstraint> {
+    config: &'a PlannerConfig,
+    tracks: &'a [LinearTrack],
+    ownship: VesselState,
+    goal_m: DVec2,
+    start_time_s: f64,
+    steady_course_rad: f64,
+    constraint: &'a C,
 }
 
 impl<'a> SafetyChecker<'a> {
-    /// A checker for one problem.
+    /// A checker for one problem: `tracks`, each target's predicted motion
+    /// from the plan's start; `ownship` at the plan's start at its service
+    /// speed (its length holds along the plan; each move carries its own
+    /// velocity); the goal; the clock at the plan's start, seconds (time
+    /// stamps of new latches). Ownship's steady course is its present one
+    /// until [`with_steady_course`](Self::with_steady_course) says otherwise.
     #[must_use]
     pub fn new(
         config: &'a PlannerConfig,
@@ -153,7 +152,62 @@ impl<'a> SafetyChecker<'a> {
             goal_m,
             start_time_s,
             steady_course_rad: ownship.course_rad,
+            constraint: &NoConstraint,
         }
+    }
+}
+
+impl<'a, C: Constraint> SafetyChecker<'a, C> {
+    /// The same checker, also keeping `constraint` on every piece of motion.
+    #[must_use]
+    pub fn with_constraint<D: Constraint>(self, constraint: &'a D) -> SafetyChecker<'a, D> {
+        SafetyChecker {
+            config: self.config,
+            tracks: self.tracks,
+            ownship: self.ownship,
+            goal_m: self.goal_m,
+            start_time_s: self.start_time_s,
+            steady_course_rad: self.steady_course_rad,
+            constraint,
+        }
+    }
+
+    /// The planner's settings.
+    #[must_use]
+    pub fn config(&self) -> &'a PlannerConfig {
+        self.config
+    }
+
+    /// Each target's predicted motion from the plan's start.
+    #[must_use]
+    pub fn tracks(&self) -> &'a [LinearTrack] {
+        self.tracks
+    }
+
+    /// Ownship at the plan's start, at its service speed.
+    #[must_use]
+    pub fn ownship(&self) -> &VesselState {
+        &self.ownship
+    }
+
+    /// The clock at the plan's start, seconds.
+    #[must_use]
+    pub fn start_time_s(&self) -> f64 {
+        self.start_time_s
+    }
+
+    /// The course ownship held steadily before the turn it is in at the
+    /// plan's start (`PlanningProblem::steady_course_rad`), radians; its
+    /// present course when it is not turning.
+    #[must_use]
+    pub fn steady_course_rad(&self) -> f64 {
+        self.steady_course_rad
+    }
+
+    /// The user constraint kept.
+    #[must_use]
+    pub fn constraint(&self) -> &'a C {
+        self.constraint
     }
 
     /// The checker with `steady_course_rad` (if given) as the course ownship

@@ -21,6 +21,7 @@
 //! on the way are transient. The encounters move on after every piece,
 //! transient or not, as the closed loop moves them at every step.
 
+use crate::constraint::{Constraint, NoConstraint, Segment};
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
 use vorrt_colregs::rules::{
@@ -145,7 +146,7 @@ pub trait MotionValidator {
     ) -> Result<(), RejectionCause>;
 }
 
-impl MotionValidator for SafetyChecker<'_> {
+impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
     fn validate(
         &self,
         leg: &Leg,
@@ -160,11 +161,11 @@ impl MotionValidator for SafetyChecker<'_> {
         // with the next leg).
         let before_s = start_elapsed_s - 1e-3;
         let before_course_rad = if start_elapsed_s <= 0.0 {
-            self.steady_course_rad
+            self.steady_course_rad()
         } else {
             leg.start_course_rad
         };
-        for piece in leg.pieces(self.config.step_m) {
+        for piece in leg.pieces(self.config().step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
                 start_elapsed_s: start_elapsed_s + piece.elapsed_s,
@@ -172,6 +173,26 @@ impl MotionValidator for SafetyChecker<'_> {
                 velocity_mps: piece.velocity_mps,
                 duration_s: piece.duration_s,
             };
+            // The user's constraint (land, a no-go area, a lane) on the
+            // curve sailed: a chord of a turn is up to the chord error off
+            // the arc, a piece changing speed up to the timing error.
+            let margin_m = if piece.turning {
+                piece_error_m
+            } else if piece.transient() {
+                timing_error_m
+            } else {
+                0.0
+            };
+            self.constraint()
+                .check_segment(&Segment {
+                    start_m: piece.start_m,
+                    end_m: piece.end_m(),
+                    margin_m,
+                    start_elapsed_s: candidate.start_elapsed_s,
+                    duration_s: candidate.duration_s,
+                    course_rad: piece.course_rad,
+                })
+                .map_err(RejectionCause::Constraint)?;
             if piece.transient() {
                 // A turn, or a change of speed, is judged as a manoeuvre by
                 // the course and speed it settles on (rule 8(b)); but a
@@ -180,11 +201,6 @@ impl MotionValidator for SafetyChecker<'_> {
                 // as the manoeuvre is sailed, as the closed loop moves them at
                 // every step. While the speed changes, ownship is up to the
                 // timing error off the piece sailed at its mean velocity.
-                let margin_m = if piece.turning {
-                    piece_error_m
-                } else {
-                    timing_error_m
-                };
                 self.check_turning(&candidate, &state.latches, &state.alterations, margin_m)?;
             } else {
                 self.check(&candidate, &state.latches, &state.alterations)?;
@@ -215,15 +231,15 @@ impl MotionValidator for SafetyChecker<'_> {
                 position_m: piece.end_m(),
                 course_rad,
                 speed_mps: piece.velocity_mps.length(),
-                ..self.ownship
+                ..*self.ownship()
             };
             state.advance(
                 &own_then,
                 steady_course_rad,
-                self.tracks,
+                self.tracks(),
                 end_elapsed_s,
-                self.start_time_s + end_elapsed_s,
-                &self.config.rules,
+                self.start_time_s() + end_elapsed_s,
+                &self.config().rules,
             );
         }
         Ok(())
@@ -232,8 +248,10 @@ impl MotionValidator for SafetyChecker<'_> {
 
 /// Checks `legs`, sailed one after the other from `problem`'s start with its
 /// encounters (and alterations made) in force, with the planner's own
-/// validator: how a closed loop asks whether the rest of its plan is still
-/// valid as the targets are now predicted.
+/// validator and no user constraint: how a closed loop asks whether the rest
+/// of its plan is still valid as the targets are now predicted.
+/// [`Planner::check_legs`](crate::Planner::check_legs) asks the same with the
+/// planner's constraint.
 ///
 /// # Errors
 /// The first [`RejectionCause`] a leg runs into.
@@ -241,6 +259,19 @@ pub fn check_legs(
     config: &crate::PlannerConfig,
     problem: &crate::PlanningProblem,
     legs: &[Leg],
+) -> Result<(), RejectionCause> {
+    check_legs_with(config, problem, legs, &NoConstraint)
+}
+
+/// As [`check_legs`], keeping `constraint` as well.
+///
+/// # Errors
+/// The first [`RejectionCause`] a leg runs into.
+pub fn check_legs_with<C: Constraint>(
+    config: &crate::PlannerConfig,
+    problem: &crate::PlanningProblem,
+    legs: &[Leg],
+    constraint: &C,
 ) -> Result<(), RejectionCause> {
     let tracks: Vec<LinearTrack> = problem
         .targets
@@ -254,7 +285,8 @@ pub fn check_legs(
         problem.goal_m,
         problem.start_time_s,
     )
-    .with_steady_course(problem.steady_course_rad);
+    .with_steady_course(problem.steady_course_rad)
+    .with_constraint(constraint);
     let targets = tracks.len();
     let mut state = EncounterState {
         latches: (0..targets)

@@ -14,7 +14,9 @@
 //! `max_restarts` times, then the planner says why it found no safe path.
 
 use crate::config::{PlannerConfig, SearchEffort};
+use crate::constraint::{Constraint, NoConstraint};
 use crate::error::PlannerError;
+use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
 use crate::plan::{Plan, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::{FailedSearch, Recording};
@@ -22,12 +24,12 @@ use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
 use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::tree::Tree;
-use crate::validity::{EncounterState, MotionValidator};
+use crate::validity::{EncounterState, MotionValidator, check_legs_with};
 use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose, RateLimitedTurn};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, OwnshipModel, Pose};
 
 /// How often (in samples) the wall clock is read when a budget is set.
 const CLOCK_EVERY_SAMPLES: u64 = 32;
@@ -56,9 +58,14 @@ const CLOCK_EVERY_SAMPLES: u64 = 32;
 ///     .find(|course| vorrt_geometry::angle::signed_turn(0.0, *course).abs() > 1e-9).unwrap();
 /// assert!(vorrt_geometry::angle::signed_turn(0.0, first_turn) > 0.0);
 /// ```
+///
+/// A planner keeps a user [`Constraint`] too (land, a no-go area, a lane:
+/// [`Planner::with_constraint`]) everywhere it judges a move; [`Planner::new`]
+/// plans in open sea ([`NoConstraint`]).
 #[derive(Debug)]
-pub struct Planner {
+pub struct Planner<C = NoConstraint> {
     config: PlannerConfig,
+    constraint: C,
     tree: Tree,
     tracks: Vec<LinearTrack>,
     scratch: EncounterState,
@@ -72,14 +79,28 @@ enum Growth {
 }
 
 impl Planner {
-    /// A planner with `config`.
+    /// A planner with `config`, in open sea (no user constraint).
     ///
     /// # Errors
     /// [`PlannerError::InvalidConfig`] (or `InvalidRules`) when a setting is out of range.
     pub fn new(config: PlannerConfig) -> Result<Self, PlannerError> {
+        Planner::with_constraint(config, NoConstraint)
+    }
+}
+
+impl<C: Constraint> Planner<C> {
+    /// A planner with `config` that keeps `constraint` on every move it
+    /// judges: in the tree, the manoeuvre search, the path simplifier,
+    /// [`check_legs`](Self::check_legs) and [`evasive_leg`](Self::evasive_leg);
+    /// the sampler draws only the points it admits.
+    ///
+    /// # Errors
+    /// [`PlannerError::InvalidConfig`] (or `InvalidRules`) when a setting is out of range.
+    pub fn with_constraint(config: PlannerConfig, constraint: C) -> Result<Self, PlannerError> {
         config.validate()?;
         Ok(Self {
             config,
+            constraint,
             tree: Tree::default(),
             tracks: Vec::new(),
             scratch: EncounterState::default(),
@@ -91,6 +112,40 @@ impl Planner {
     #[must_use]
     pub fn config(&self) -> &PlannerConfig {
         &self.config
+    }
+
+    /// The user constraint kept.
+    #[must_use]
+    pub fn constraint(&self) -> &C {
+        &self.constraint
+    }
+
+    /// Whether `legs`, sailed one after the other from `problem`'s start,
+    /// pass this planner's validity check (its COLREGs level and its
+    /// constraint): how a closed loop asks whether the rest of its plan
+    /// still holds ([`check_legs_with`]).
+    ///
+    /// # Errors
+    /// The first [`RejectionCause`](crate::RejectionCause) a leg runs into.
+    pub fn check_legs(
+        &self,
+        problem: &PlanningProblem,
+        legs: &[Leg],
+    ) -> Result<(), crate::RejectionCause> {
+        check_legs_with(&self.config, problem, legs, &self.constraint)
+    }
+
+    /// The evasive manoeuvre ([`evasive_leg_holding`]) among the courses
+    /// whose leg keeps this planner's constraint, for when no safe path
+    /// is found.
+    #[must_use]
+    pub fn evasive_leg<M: MotionModel>(
+        &self,
+        problem: &PlanningProblem,
+        search: &EvasionSearch<'_, M>,
+        holding: Option<EvasiveManeuver>,
+    ) -> (Leg, EvasiveManeuver) {
+        evasive_leg_constrained(problem, search, holding, &self.constraint)
     }
 
     /// Plans a safe, COLREGs-compliant path for `problem`, drawing every
@@ -314,7 +369,8 @@ impl Planner {
             problem.goal_m,
             problem.start_time_s,
         )
-        .with_steady_course(problem.steady_course_rad);
+        .with_steady_course(problem.steady_course_rad)
+        .with_constraint(&self.constraint);
         let model = InstantTurn {
             max_turn_rad: config.max_turn_per_step_rad,
         };
@@ -335,6 +391,10 @@ impl Planner {
                 });
             }
             let sample = sampler.sample(problem.goal_m, goal_bias);
+            // Only where the user's constraint admits a point (in water).
+            if sample != problem.goal_m && !self.constraint.admits_point(sample) {
+                continue;
+            }
             // A goal sample extends the nearest node that can head for the
             // goal within one bounded turn: the plainly nearest node often
             // points away and would only orbit the goal.
@@ -440,10 +500,16 @@ impl Planner {
     ) -> Option<Plan> {
         let branch = self.tree.branch(node);
         let own = problem.ownship_at_service_speed();
-        let rate = self
+        // How ownship sails (the one model of `Turning::ownship_model`): a
+        // rate-limited turn, or the tree's own instantaneous steps.
+        let sailed = match self
             .config
             .turning
-            .max_turn_rate_rad_s(own.length_m, own.speed_mps);
+            .ownship_model(own.length_m, own.speed_mps)
+        {
+            OwnshipModel::RateLimited(model) => Some(model),
+            OwnshipModel::Instant(_) => None,
+        };
         let speeds = Speeds {
             start_mps: problem.ownship.speed_mps,
             service_mps: own.speed_mps,
@@ -453,9 +519,9 @@ impl Planner {
         };
         if node == 0 && own.position_m != problem.goal_m {
             // Not a branch to the goal: only the manoeuvre search applies.
-            rate?;
+            sailed?;
         }
-        let legs: Vec<SimplifiedLeg> = match rate {
+        let legs: Vec<SimplifiedLeg> = match sailed {
             None => branch
                 .windows(2)
                 .map(|pair| {
@@ -480,7 +546,7 @@ impl Planner {
                     }
                 })
                 .collect(),
-            Some(rate) => {
+            Some(model) => {
                 // Where sea room allows, the one manoeuvre passes wider than
                 // d_th (PlannerConfig::preferred_clearance_factor); the same
                 // validator judges it, with the wider clearance.
@@ -500,7 +566,6 @@ impl Planner {
                     latches: self.tree.latches_of(0).to_vec(),
                     alterations: self.tree.alterations_of(0).to_vec(),
                 };
-                let model = RateLimitedTurn::from_rate(own.speed_mps, rate);
                 let start = Pose {
                     position_m: own.position_m,
                     course_rad: own.course_rad,
@@ -516,7 +581,8 @@ impl Planner {
                         problem.goal_m,
                         problem.start_time_s,
                     )
-                    .with_steady_course(problem.steady_course_rad);
+                    .with_steady_course(problem.steady_course_rad)
+                    .with_constraint(&self.constraint);
                     let recording = Recording::new(&checker);
                     let legs = if hold_first {
                         hold_then_alter(&model, &recording, start, speeds, problem.goal_m, &root)
@@ -575,7 +641,7 @@ impl Planner {
             time_s: problem.start_time_s,
             course_rad: self.tree.courses[0],
         });
-        if rate.is_none() {
+        if sailed.is_none() {
             // The branch itself, exactly as the tree holds it.
             waypoints.extend(branch[1..].iter().map(|&index| Waypoint {
                 position_m: self.tree.positions[index as usize],
