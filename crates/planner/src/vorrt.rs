@@ -135,7 +135,7 @@ impl<C: Constraint> Planner<C> {
         check_legs_with(&self.config, problem, legs, &self.constraint)
     }
 
-    /// The evasive manoeuvre ([`evasive_leg_holding`]) among the courses
+    /// The evasive manoeuvre ([`evasive_leg_holding`](crate::evasive_leg_holding)) among the courses
     /// whose leg keeps this planner's constraint, for when no safe path
     /// is found.
     #[must_use]
