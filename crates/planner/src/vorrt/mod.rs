@@ -17,19 +17,21 @@ use crate::config::{PlannerConfig, SearchEffort};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::error::PlannerError;
 use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
-use crate::plan::{Plan, PlanStatistics, RejectionCounts, Waypoint};
+use crate::plan::{Plan, PlanStatistics, RejectionCounts};
 use crate::problem::PlanningProblem;
-use crate::replay::{FailedSearch, Recording};
+use crate::replay::FailedSearch;
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
-use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator, check_legs_with};
+pub use extract::{ClearanceLevel, ManeuverShape, Probe, ROOT_LADDER, Rung};
 use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, OwnshipModel, Pose};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose};
+
+mod extract;
 
 /// How often (in samples) the wall clock is read when a budget is set.
 const CLOCK_EVERY_SAMPLES: u64 = 32;
@@ -267,9 +269,13 @@ impl<C: Constraint> Planner<C> {
         let capacity = 2 * config.nodes_per_phase + 2;
         let mut statistics = PlanStatistics::default();
         let mut total_nodes = 0u64;
+        // Whether the search from the root (its whole ladder) has failed.
         let mut root_searched = false;
         // A retry (first phase only) is a draw where most searches fail.
-        let floor_first = effort == SearchEffort::FirstPhase;
+        let probe = match effort {
+            SearchEffort::FirstPhase => Probe::FloorFirst,
+            SearchEffort::Full => Probe::PreferredFirst,
+        };
 
         for attempt in 0..=config.max_restarts {
             statistics.restarts = attempt as u64;
@@ -288,7 +294,7 @@ impl<C: Constraint> Planner<C> {
             // the goal), when it is valid, needs no tree at all.
             statistics.nodes = 1;
             if attempt == 0 && own.position_m != problem.goal_m {
-                match self.extract(problem, 0, &mut statistics, refused, false, floor_first) {
+                match self.search_root(problem, &statistics, refused, probe) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -324,14 +330,7 @@ impl<C: Constraint> Planner<C> {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract(
-                    problem,
-                    node,
-                    &mut statistics,
-                    refused,
-                    root_searched,
-                    floor_first,
-                ) {
+                match self.extract_branch(problem, node, &statistics, refused, root_searched) {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -476,210 +475,6 @@ impl<C: Constraint> Planner<C> {
             }
         }
         Ok(Growth::Exhausted)
-    }
-
-    /// The plan along the branch to `node`: the branch itself for
-    /// instantaneous turns, else its simplification into sailable legs
-    /// (`None` when there is none). For the root alone (`node` 0, short of
-    /// the goal) with rate-limited turns, the manoeuvre search of
-    /// [`simplify`] from the start: one alteration held, then the goal;
-    /// failing that, two alterations ([`hold_then_alter`]). Every leg the
-    /// validity check refuses is counted in `refused`. With
-    /// `root_searched`, the manoeuvre search from the root (at this
-    /// planner's own settings) is known to fail ([`simplify_after`]). With
-    /// `floor_first` the manoeuvre search from the root tries d_th before
-    /// the preferred clearance, else after it: the same plan either way.
-    fn extract(
-        &self,
-        problem: &PlanningProblem,
-        node: u32,
-        statistics: &mut PlanStatistics,
-        refused: &mut RejectionCounts,
-        root_searched: bool,
-        floor_first: bool,
-    ) -> Option<Plan> {
-        let branch = self.tree.branch(node);
-        let own = problem.ownship_at_service_speed();
-        // How ownship sails (the one model of `Turning::ownship_model`): a
-        // rate-limited turn, or the tree's own instantaneous steps.
-        let sailed = match self
-            .config
-            .turning
-            .ownship_model(own.length_m, own.speed_mps)
-        {
-            OwnshipModel::RateLimited(model) => Some(model),
-            OwnshipModel::Instant(_) => None,
-        };
-        let speeds = Speeds {
-            start_mps: problem.ownship.speed_mps,
-            service_mps: own.speed_mps,
-            change_mps2: self
-                .config
-                .speed_change_rate_mps2(own.length_m, own.speed_mps),
-        };
-        if node == 0 && own.position_m != problem.goal_m {
-            // Not a branch to the goal: only the manoeuvre search applies.
-            sailed?;
-        }
-        let legs: Vec<SimplifiedLeg> = match sailed {
-            None => branch
-                .windows(2)
-                .map(|pair| {
-                    let (from, to) = (pair[0] as usize, pair[1] as usize);
-                    let length_m = self.tree.positions[from].distance(self.tree.positions[to]);
-                    let mut leg = Leg::straight(
-                        self.tree.positions[from],
-                        self.tree.courses[to],
-                        length_m,
-                        own.speed_mps,
-                    );
-                    leg.start_course_rad = self.tree.courses[from];
-                    leg.turn_rad =
-                        angle::signed_turn(self.tree.courses[from], self.tree.courses[to]);
-                    SimplifiedLeg {
-                        leg,
-                        end_elapsed_s: self.tree.times[to] - problem.start_time_s,
-                        state: EncounterState {
-                            latches: self.tree.latches_of(pair[1]).to_vec(),
-                            alterations: self.tree.alterations_of(pair[1]).to_vec(),
-                        },
-                    }
-                })
-                .collect(),
-            Some(model) => {
-                // Where sea room allows, the one manoeuvre passes wider than
-                // d_th (PlannerConfig::preferred_clearance_factor); the same
-                // validator judges it, with the wider clearance.
-                let preferred = PlannerConfig {
-                    clearance_m: self.config.clearance_m * self.config.preferred_clearance_factor,
-                    ..self.config
-                };
-                let points: Vec<DVec2> = if node == 0 {
-                    vec![problem.goal_m]
-                } else {
-                    branch[1..]
-                        .iter()
-                        .map(|&index| self.tree.positions[index as usize])
-                        .collect()
-                };
-                let root = EncounterState {
-                    latches: self.tree.latches_of(0).to_vec(),
-                    alterations: self.tree.alterations_of(0).to_vec(),
-                };
-                let start = Pose {
-                    position_m: own.position_m,
-                    course_rad: own.course_rad,
-                };
-                // `hold_first`: the manoeuvre of a vessel that keeps her
-                // course before she acts (`hold_then_alter`), else one
-                // alteration held then the goal (or the branch).
-                let mut search = |config: &PlannerConfig, hold_first: bool| {
-                    let checker = SafetyChecker::new(
-                        config,
-                        &self.tracks,
-                        own,
-                        problem.goal_m,
-                        problem.start_time_s,
-                    )
-                    .with_steady_course(problem.steady_course_rad)
-                    .with_constraint(&self.constraint);
-                    let recording = Recording::new(&checker);
-                    let legs = if hold_first {
-                        hold_then_alter(&model, &recording, start, speeds, problem.goal_m, &root)
-                    } else {
-                        simplify_after(
-                            &model,
-                            &recording,
-                            start,
-                            speeds,
-                            &points,
-                            &root,
-                            root_searched && node != 0,
-                        )
-                    };
-                    refused.add(&recording.refused.get());
-                    legs
-                };
-                if node != 0 {
-                    search(&self.config, false)?
-                } else {
-                    // From the root: one alteration held, then the goal;
-                    // failing that, the course held first and then one
-                    // alteration (a stand-on vessel's manoeuvre, rule 17),
-                    // before any tree. Every check that involves the
-                    // clearance refuses a distance below it, so what is
-                    // valid at the wider clearance is valid at d_th, and
-                    // when no manoeuvre is valid at d_th none is at the
-                    // wider one: the wider one is preferred, and the order
-                    // of the two searches of a shape changes only their
-                    // cost. Where the search is likely to fail
-                    // (`floor_first`: a retry), d_th first spares the wider
-                    // search; elsewhere the wider one first spares the
-                    // search at d_th.
-                    let mut found = None;
-                    for hold_first in [false, true] {
-                        found = if self.config.preferred_clearance_factor <= 1.0 {
-                            search(&self.config, hold_first)
-                        } else if floor_first {
-                            search(&self.config, hold_first)
-                                .map(|floor| search(&preferred, hold_first).unwrap_or(floor))
-                        } else {
-                            search(&preferred, hold_first)
-                                .or_else(|| search(&self.config, hold_first))
-                        };
-                        if found.is_some() {
-                            break;
-                        }
-                    }
-                    found?
-                }
-            }
-        };
-        let mut waypoints = Vec::with_capacity(legs.len() + 1);
-        waypoints.push(Waypoint {
-            position_m: own.position_m,
-            time_s: problem.start_time_s,
-            course_rad: self.tree.courses[0],
-        });
-        if sailed.is_none() {
-            // The branch itself, exactly as the tree holds it.
-            waypoints.extend(branch[1..].iter().map(|&index| Waypoint {
-                position_m: self.tree.positions[index as usize],
-                time_s: self.tree.times[index as usize],
-                course_rad: self.tree.courses[index as usize],
-            }));
-        } else {
-            waypoints.extend(legs.iter().enumerate().map(|(index, leg)| Waypoint {
-                // The plan ends exactly on the goal.
-                position_m: if index + 1 == legs.len() {
-                    problem.goal_m
-                } else {
-                    leg.leg.end_m()
-                },
-                time_s: problem.start_time_s + leg.end_elapsed_s,
-                course_rad: leg.leg.course_rad,
-            }));
-        }
-        let target_states = waypoints
-            .iter()
-            .map(|waypoint| {
-                let elapsed_s = waypoint.time_s - problem.start_time_s;
-                self.tracks
-                    .iter()
-                    .map(|track| track.state_at(elapsed_s))
-                    .collect()
-            })
-            .collect();
-        let encounters = std::iter::once(self.tree.latches_of(0).to_vec())
-            .chain(legs.iter().map(|leg| leg.state.latches.clone()))
-            .collect();
-        Some(Plan {
-            waypoints,
-            legs: legs.into_iter().map(|leg| leg.leg).collect(),
-            target_states,
-            encounters,
-            statistics: *statistics,
-        })
     }
 }
 
