@@ -36,8 +36,7 @@
 //! `d_th` is the distance the planner and the scoring require, also not a
 //! collision test.
 
-use crate::encounter::{Encounter, Role};
-use crate::latch::EncounterLatch;
+use crate::encounter::{Encounter, EncounterLatch, Role};
 use crate::parameters::RuleParameters;
 use glam::DVec2;
 use std::f64::consts::PI;
