@@ -14,6 +14,7 @@
 //! | a detectable turn (beyond the 2° tolerance) | [`is_detectable_turn`] | 16 |
 //! | a turn to port of the reference course | [`is_port_turn`] | 14(a), 15, 17(c) |
 //! | a readily apparent alteration (30°) | [`is_readily_apparent`], measured: [`is_measured_readily_apparent`] | 8(b), 16 |
+//! | a readily apparent alteration eased back (no longer held) | [`is_alteration_eased_back`] | 8(a), 16 |
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
@@ -273,6 +274,27 @@ pub fn is_port_turn(course_change_rad: f64, parameters: &RuleParameters) -> bool
 #[must_use]
 pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) -> bool {
     course_change_rad.abs() >= parameters.apparent_turn_rad
+}
+
+/// Rules 8(a), 16: whether a readily apparent alteration has been eased back,
+/// so that it is no longer held: the course change in the alteration's
+/// direction (`change_toward_rad`: the signed change from
+/// [`course_change_rad`], times the side the alteration went to) has fallen
+/// more than [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) (not
+/// detectable) below [`apparent_turn_rad`](RuleParameters::apparent_turn_rad).
+/// The prospective check ([`check_action`](crate::check_action)) and the
+/// retrospective scoring both judge holding with it.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_alteration_eased_back, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(!is_alteration_eased_back(29f64.to_radians(), &params)); // within 2° of 30°
+/// assert!(is_alteration_eased_back(10f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_alteration_eased_back(change_toward_rad: f64, parameters: &RuleParameters) -> bool {
+    change_toward_rad < parameters.apparent_turn_rad - parameters.turn_tolerance_rad
 }
 
 /// The rounding allowed when an angle computed from positions is compared

@@ -9,8 +9,8 @@ use crate::observed::turn_episodes;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    course_change_rad, in_contact, is_detectable_turn, is_measured_readily_apparent,
-    keeps_clearance,
+    course_change_rad, in_contact, is_alteration_eased_back, is_detectable_turn,
+    is_measured_readily_apparent, keeps_clearance,
 };
 use crate::vessel::VesselState;
 use glam::DVec2;
@@ -268,11 +268,10 @@ fn eased_back(
         .position(|s| is_measured_readily_apparent(turn_of(latch, s), parameters))
     {
         let side = turn_of(latch, &before_cpa[reached]).signum();
-        let floor = parameters.apparent_turn_rad - parameters.turn_tolerance_rad;
         return before_cpa[reached..]
             .iter()
             .map(|s| turn_of(latch, s))
-            .find(|turn| side * turn < floor)
+            .find(|turn| is_alteration_eased_back(side * turn, parameters))
             .map(EasedBack::Course);
     }
     let apparent_reduction_mps =
