@@ -75,7 +75,8 @@ fn closest_approach_is_found_between_samples() {
     // instants miss the exact pass; the interpolated minimum does not.
     let target = VesselState::new(DVec2::new(150.0, 9033.0), PI, 6.0, 50.0);
     let samples = run(target, f64::INFINITY, 0.0, 1500.0);
-    let (distance, time, _) = closest_approach(&samples).expect("samples");
+    let closest = closest_approach(&samples, 200.0).expect("samples");
+    let (distance, time) = (closest.distance_m, closest.time_s);
     assert!((distance - 150.0).abs() < 1e-6, "{distance}");
     assert!((time - 9033.0 / 12.0).abs() < 1e-6, "{time}");
 }
