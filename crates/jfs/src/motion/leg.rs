@@ -112,6 +112,10 @@ impl Leg {
     /// assert_eq!(stop.speed_at(200.0), 0.0);
     /// ```
     #[must_use]
+    #[expect(
+        clippy::float_cmp,
+        reason = "any difference of speed is a change of speed"
+    )]
     pub fn from_speed(self, start_speed_mps: f64, rate_mps2: f64) -> Self {
         let start_speed_mps = start_speed_mps.max(0.0);
         let changes = start_speed_mps != self.speed_mps

@@ -52,14 +52,22 @@ impl Leg {
     /// pieces of at most `max_piece_m` metres (a whole run when it is
     /// shorter), and the change of speed, where there is one, into pieces of
     /// at most [`SPEED_PIECE_S`] seconds. An instantaneous turn has no chord.
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a piece count: the ceiling of a non-negative ratio"
+    )]
+    #[expect(
+        clippy::cast_sign_loss,
+        reason = "a piece count: the ceiling of a non-negative ratio"
+    )]
     pub fn pieces(&self, max_piece_m: f64) -> impl Iterator<Item = Piece> + '_ {
         let turn = self.turn_rad.abs();
-        let chords = if self.turn_radius_m > 0.0 && turn > 0.0 {
+        let chord_count = if self.turn_radius_m > 0.0 && turn > 0.0 {
             (turn / CHORD_ANGLE_RAD).ceil().max(1.0) as usize
         } else {
             0
         };
-        let runs = if self.straight_m > 0.0 {
+        let run_count = if self.straight_m > 0.0 {
             if max_piece_m > 0.0 && self.straight_m > max_piece_m {
                 (self.straight_m / max_piece_m).ceil() as usize
             } else {
@@ -69,7 +77,7 @@ impl Leg {
             0
         };
         let change_s = self.speed_change_s();
-        let changes = if change_s > 0.0 {
+        let change_count = if change_s > 0.0 {
             (change_s / SPEED_PIECE_S).ceil() as usize
         } else {
             0
@@ -79,9 +87,9 @@ impl Leg {
             index: 0,
             arc_m: self.arc_m(),
             length_m: self.length_m(),
-            chords: (0, chords),
-            runs: (0, runs),
-            changes: (0, changes),
+            chords: (0, chord_count),
+            runs: (0, run_count),
+            changes: (0, change_count),
             change_s,
             change_m: self.speed_change_m(),
             from_m: 0.0,
@@ -121,11 +129,15 @@ pub(super) struct Pieces<'a> {
 impl Pieces<'_> {
     /// The next point of each grid beyond `from_m`, skipping points on or
     /// before it.
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "piece counts and indices are small, so exact in f64"
+    )]
     fn next_point(&mut self) -> Option<f64> {
         let (leg, arc_m, straight_m) = (self.leg, self.arc_m, self.leg.straight_m);
         let change_s = self.change_s;
         let from_m = self.from_m;
-        let (chords, runs, changes) = (self.chords.1, self.runs.1, self.changes.1);
+        let (chord_count, run_count, change_count) = (self.chords.1, self.runs.1, self.changes.1);
         let mut best = f64::INFINITY;
         let mut visit = |grid: &mut (usize, usize), point: &dyn Fn(usize) -> f64| {
             while grid.0 < grid.1 {
@@ -137,12 +149,12 @@ impl Pieces<'_> {
                 grid.0 += 1;
             }
         };
-        visit(&mut self.chords, &|k| arc_m * k as f64 / chords as f64);
+        visit(&mut self.chords, &|k| arc_m * k as f64 / chord_count as f64);
         visit(&mut self.runs, &|k| {
-            arc_m + straight_m * k as f64 / runs as f64
+            arc_m + straight_m * k as f64 / run_count as f64
         });
         visit(&mut self.changes, &|k| {
-            leg.distance_at(change_s * k as f64 / changes as f64)
+            leg.distance_at(change_s * k as f64 / change_count as f64)
         });
         (best.is_finite()).then(|| best.min(self.length_m))
     }
@@ -152,21 +164,25 @@ impl Pieces<'_> {
     /// The `index`-th piece of a leg sailed at one speed: chords of equal
     /// angle, then runs of equal length, in the form the planner has always
     /// cut legs (its recorded plans are reproduced bit for bit).
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "piece counts and indices are small, so exact in f64"
+    )]
     fn at_one_speed(&self, index: usize) -> Option<Piece> {
         let leg = self.leg;
-        let (chords, runs) = (self.chords.1, self.runs.1);
-        if index >= chords + runs {
+        let (chord_count, run_count) = (self.chords.1, self.runs.1);
+        if index >= chord_count + run_count {
             return None;
         }
         let turn = leg.turn_rad.abs();
         let turn_s = leg.turn_duration_s();
-        if index < chords {
-            let chord_s = turn_s / chords as f64;
-            let from = leg.on_arc(turn * index as f64 / chords as f64);
-            let to = leg.on_arc(turn * (index + 1) as f64 / chords as f64);
+        if index < chord_count {
+            let chord_s = turn_s / chord_count as f64;
+            let from = leg.on_arc(turn * index as f64 / chord_count as f64);
+            let to = leg.on_arc(turn * (index + 1) as f64 / chord_count as f64);
             let course_rad = angle::normalize_2pi(
                 leg.start_course_rad
-                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chords as f64,
+                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chord_count as f64,
             );
             return Some(Piece {
                 start_m: from,
@@ -178,11 +194,11 @@ impl Pieces<'_> {
                 changing_speed: false,
             });
         }
-        let run = index - chords;
-        let run_s = leg.straight_duration_s() / runs as f64;
+        let run = index - chord_count;
+        let run_s = leg.straight_duration_s() / run_count as f64;
         // Leg::velocity_mps is course_to_unit(course) * speed.
         let velocity = self.unit * leg.speed_mps;
-        let (start_m, duration_s) = if runs == 1 {
+        let (start_m, duration_s) = if run_count == 1 {
             (self.turn_end_m, leg.straight_duration_s())
         } else {
             (self.turn_end_m + velocity * (run_s * run as f64), run_s)
@@ -202,6 +218,10 @@ impl Pieces<'_> {
 impl Iterator for Pieces<'_> {
     type Item = Piece;
 
+    #[expect(
+        clippy::float_cmp,
+        reason = "the last end is reused only for the very same distance"
+    )]
     fn next(&mut self) -> Option<Piece> {
         if self.leg.speed_change.is_none() {
             let piece = self.at_one_speed(self.index);
