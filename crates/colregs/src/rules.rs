@@ -498,6 +498,7 @@ pub fn must_stand_on(encounter: Encounter, may_act: bool) -> bool {
 /// ```
 #[inline]
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn contact_range_m(length_a_m: f64, length_b_m: f64) -> f64 {
     0.5 * (length_a_m + length_b_m)
 }
@@ -514,14 +515,15 @@ pub fn contact_range_m(length_a_m: f64, length_b_m: f64) -> f64 {
 /// ```
 #[inline]
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
     distance_m < contact_range_m(length_a_m, length_b_m)
 }
 
 /// Whether two vessels of lengths `length_a_m` and `length_b_m`, their
 /// reference positions `distance_m` apart, keep the clearance `clearance_m`
-/// (d_th) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
-/// The planner keeps its reference points that far apart, so "d_th kept" is
+/// (`d_th`) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
+/// The planner keeps its reference points that far apart, so "`d_th` kept" is
 /// never hull contact (`docs/architecture.md`).
 ///
 /// ```
@@ -531,6 +533,7 @@ pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
 /// assert!(keeps_clearance(350.0, 150.0, 150.0, 200.0));
 /// ```
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn keeps_clearance(
     distance_m: f64,
     length_a_m: f64,

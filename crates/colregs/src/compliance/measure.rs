@@ -99,7 +99,7 @@ pub(super) struct Measurements {
     pub(super) time_of_min_s: f64,
     /// Whether the hulls touched at the closest approach ([`in_contact`]).
     pub(super) in_contact: bool,
-    /// Whether d_th was kept between the hulls ([`keeps_clearance`]).
+    /// Whether `d_th` was kept between the hulls ([`keeps_clearance`]).
     pub(super) clearance_kept: bool,
     /// Side of ownship on which the target lay at the closest approach.
     pub(super) passing_side: Option<PassingSide>,
@@ -296,7 +296,7 @@ pub(crate) struct ClosestApproach {
     pub(crate) step: usize,
     /// Whether the hulls touched ([`in_contact`]), on the lengths at `step`.
     pub(crate) in_contact: bool,
-    /// Whether `clearance_m` (d_th) was kept between the hulls
+    /// Whether `clearance_m` (`d_th`) was kept between the hulls
     /// ([`keeps_clearance`]), on the lengths at `step`.
     pub(crate) clearance_kept: bool,
 }

@@ -59,6 +59,7 @@ fn misordered_ranges_are_named() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn safety_score_breakpoints() {
     let s = ScoringParameters::default();
     assert_eq!(safety_score(f64::INFINITY, &s), 1.0);
@@ -82,6 +83,7 @@ fn closest_approach_is_found_between_samples() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn compliant_head_on() {
     let rules = RuleParameters::default();
     let samples = run(head_on_target(), 60.0, 35.0, 1500.0);
@@ -104,6 +106,7 @@ fn compliant_head_on() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn head_on_without_action_is_no_action_and_collision() {
     let rules = RuleParameters::default();
     let samples = run(head_on_target(), f64::INFINITY, 0.0, 1500.0);
@@ -153,6 +156,7 @@ fn no_action_is_a_finding_even_when_the_pass_was_clear_of_d_th() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn role_none_scores_only_safety() {
     let rules = RuleParameters::default();
     let samples = run(head_on_target(), f64::INFINITY, 0.0, 100.0);
@@ -164,6 +168,7 @@ fn role_none_scores_only_safety() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn empty_recording_finds_nothing() {
     let rules = RuleParameters::default();
     let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);

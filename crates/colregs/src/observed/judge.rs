@@ -70,7 +70,7 @@ pub struct ObservedEncounter {
     pub time_of_min_s: f64,
     /// Whether the hulls touched ([`in_contact`]).
     pub collision: bool,
-    /// Whether the minimum distance kept the clearance d_th.
+    /// Whether the minimum distance kept the clearance `d_th`.
     pub clearance_kept: bool,
     /// The assessment of the encounter on the observed states (`None` when
     /// no encounter arose).
