@@ -14,7 +14,7 @@
 //!
 //! Classification is purely geometric; whether the rules are in force is the
 //! risk test's business ([`assess_risk`](crate::assess_risk)), and
-//! [`EncounterLatch`](crate::EncounterLatch) keeps the type once risk arises.
+//! [`EncounterLatch`] keeps the type once risk arises.
 
 use crate::parameters::RuleParameters;
 use crate::vessel::VesselState;

@@ -68,7 +68,7 @@ pub struct ObservedEncounter {
     pub min_distance_m: f64,
     /// When it occurred, seconds.
     pub time_of_min_s: f64,
-    /// Whether the hulls touched ([`in_contact`]).
+    /// Whether the hulls touched ([`in_contact`](crate::rules::in_contact)).
     pub collision: bool,
     /// Whether the minimum distance kept the clearance `d_th`.
     pub clearance_kept: bool,
