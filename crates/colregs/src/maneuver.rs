@@ -469,7 +469,7 @@ pub fn check_action(
                 relative_velocity,
                 f64::INFINITY,
             );
-            if cpa.distance_m < parameters.risk_cpa_m {
+            if rules::is_close_approach(&cpa, parameters) {
                 return Err(ManeuverViolation::LateAction);
             }
         }

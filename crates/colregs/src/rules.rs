@@ -10,6 +10,7 @@
 //! | judgement | predicate | rule |
 //! |---|---|---|
 //! | the target inside the minimum threshold distance (MTD) | [`within_mtd`] | 7 |
+//! | a closest approach near enough to be a risk | [`is_close_approach`] | 7 |
 //! | course change from the course held when the encounter began | [`course_change_rad`] | 8, 16, 17 |
 //! | a detectable turn (beyond the 2° tolerance) | [`is_detectable_turn`] | 16 |
 //! | a turn to port of the reference course | [`is_port_turn`] | 14(a), 15, 17(c) |
@@ -41,7 +42,7 @@ use crate::encounter::{Encounter, EncounterLatch, Role};
 use crate::parameters::RuleParameters;
 use glam::DVec2;
 use std::f64::consts::PI;
-use vorrt_geometry::angle;
+use vorrt_geometry::{Cpa, angle};
 
 /// Whether a target at `range_m` is inside the minimum threshold distance
 /// ([`mtd_m`](RuleParameters::mtd_m)): nearer, it can be a risk of collision
@@ -57,6 +58,26 @@ use vorrt_geometry::angle;
 #[must_use]
 pub fn within_mtd(range_m: f64, parameters: &RuleParameters) -> bool {
     range_m < parameters.mtd_m
+}
+
+/// Rule 7: whether a closest approach (from
+/// [`closest_point_of_approach`](vorrt_geometry::closest_point_of_approach),
+/// at present velocities) is near enough to be a risk of collision: under
+/// [`risk_cpa_m`](RuleParameters::risk_cpa_m). The risk test
+/// ([`assess_risk`](crate::assess_risk)) and the give-way check of early
+/// action ([`check_action`](crate::check_action)) both judge it with this.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_close_approach, RuleParameters};
+/// use vorrt_geometry::Cpa;
+/// let params = RuleParameters::default();
+/// assert!(is_close_approach(&Cpa { time_s: 60.0, distance_m: 500.0 }, &params));
+/// assert!(!is_close_approach(&Cpa { time_s: 60.0, distance_m: params.risk_cpa_m }, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_close_approach(cpa: &Cpa, parameters: &RuleParameters) -> bool {
+    cpa.distance_m < parameters.risk_cpa_m
 }
 
 /// The signed course change from the reference course (the course held when
