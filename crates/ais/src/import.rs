@@ -5,7 +5,7 @@ use crate::error::AisError;
 use crate::log::{AisLog, PositionReport, VesselTrack};
 use vorrt_geometry::{DVec2, units};
 use vorrt_scenarios::geo::{LocalFrame, check_lat_lon, format_utc_time};
-use vorrt_scenarios::{MAX_LENGTH_M, Scenario, VesselSpec};
+use vorrt_scenarios::{MAX_LENGTH_M, PlannerSettings, Scenario, SimulationSettings, VesselSpec};
 
 /// The length given to a vessel without a static report, metres (a typical
 /// small coaster; said on stderr by `vorrt import-ais`).
@@ -225,8 +225,8 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         )),
         ownship,
         targets,
-        planner: Default::default(),
-        simulation: Default::default(),
+        planner: PlannerSettings::default(),
+        simulation: SimulationSettings::default(),
         lanes: Vec::new(),
         seed: None,
         start_time,

@@ -97,6 +97,7 @@ pub struct AisLog {
 }
 
 /// A position report's fields as the `ais` crate decodes them.
+#[derive(Clone, Copy)]
 struct RawPosition {
     mmsi: u32,
     lat_lon: (Option<f32>, Option<f32>),

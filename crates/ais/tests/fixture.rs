@@ -63,6 +63,7 @@ fn counts_what_it_skips() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn imports_the_encounter() {
     let log = read_log(LOG);
     let import = build_scenario(&log, &options()).unwrap();
@@ -149,7 +150,7 @@ fn bad_requests_are_errors() {
     let statics: String = LOG
         .lines()
         .filter(|line| !line.contains("13P7@h"))
-        .map(|line| format!("{line}\n"))
+        .flat_map(|line| [line, "\n"])
         .collect();
     let error = build_scenario(&read_log(&statics), &self::options()).unwrap_err();
     assert!(

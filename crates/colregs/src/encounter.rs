@@ -14,7 +14,7 @@
 //!
 //! Classification is purely geometric; whether the rules are in force is the
 //! risk test's business ([`assess_risk`](crate::assess_risk)), and
-//! [`EncounterLatch`](crate::EncounterLatch) keeps the type once risk arises.
+//! [`EncounterLatch`] keeps the type once risk arises.
 
 use crate::parameters::RuleParameters;
 use crate::vessel::VesselState;
@@ -175,6 +175,34 @@ pub fn classify(own: &VesselState, target: &VesselState, parameters: &RuleParame
         Encounter::CrossingGiveWay
     } else {
         Encounter::CrossingStandOn
+    }
+}
+
+/// An encounter in force: its type, fixed when risk was first detected, and
+/// ownship's course and speed at that moment (the reference against which
+/// turns and stand-on drift are judged).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EncounterLatch {
+    /// The encounter type, fixed while the latch holds.
+    pub encounter: Encounter,
+    /// Ownship's course when the encounter began, radians.
+    pub reference_course_rad: f64,
+    /// Ownship's speed when the encounter began, m/s.
+    pub reference_speed_mps: f64,
+    /// When the encounter began, seconds.
+    pub latched_at_s: f64,
+}
+
+impl EncounterLatch {
+    /// Latches `encounter` with ownship's present course and speed as reference.
+    #[must_use]
+    pub fn new(encounter: Encounter, own: &VesselState, time_s: f64) -> Self {
+        Self {
+            encounter,
+            reference_course_rad: own.course_rad,
+            reference_speed_mps: own.speed_mps,
+            latched_at_s: time_s,
+        }
     }
 }
 

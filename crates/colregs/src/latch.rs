@@ -2,40 +2,14 @@
 //! have passed (notes, "COLREGs geometry": latch so that the classification
 //! does not flip at sector boundaries).
 
+// The latch's state lives with the encounter types, so the rule book can
+// judge it without depending on this module.
+pub use crate::encounter::EncounterLatch;
 use crate::encounter::{Encounter, classify};
 use crate::parameters::RuleParameters;
 use crate::risk::assess_risk;
 use crate::rules::within_mtd;
 use crate::vessel::VesselState;
-use serde::{Deserialize, Serialize};
-
-/// An encounter in force: its type, fixed when risk was first detected, and
-/// ownship's course and speed at that moment (the reference against which
-/// turns and stand-on drift are judged).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct EncounterLatch {
-    /// The encounter type, fixed while the latch holds.
-    pub encounter: Encounter,
-    /// Ownship's course when the encounter began, radians.
-    pub reference_course_rad: f64,
-    /// Ownship's speed when the encounter began, m/s.
-    pub reference_speed_mps: f64,
-    /// When the encounter began, seconds.
-    pub latched_at_s: f64,
-}
-
-impl EncounterLatch {
-    /// Latches `encounter` with ownship's present course and speed as reference.
-    #[must_use]
-    pub fn new(encounter: Encounter, own: &VesselState, time_s: f64) -> Self {
-        Self {
-            encounter,
-            reference_course_rad: own.course_rad,
-            reference_speed_mps: own.speed_mps,
-            latched_at_s: time_s,
-        }
-    }
-}
 
 /// Whether ownship and the target have passed each other: the range is
 /// opening and the velocities point more than

@@ -469,7 +469,7 @@ pub fn check_action(
                 relative_velocity,
                 f64::INFINITY,
             );
-            if cpa.distance_m < parameters.risk_cpa_m {
+            if rules::is_close_approach(&cpa, parameters) {
                 return Err(ManeuverViolation::LateAction);
             }
         }
@@ -478,8 +478,7 @@ pub fn check_action(
     // An overtaking vessel may come back to a parallel course once it has
     // opened its passing distance (rule 13 asks it to keep out of the way,
     // which the clearance checks judge); head-on and crossing hold on.
-    if keeps_clear && closing && turn < parameters.apparent_turn_rad - parameters.turn_tolerance_rad
-    {
+    if keeps_clear && closing && rules::is_alteration_eased_back(turn, parameters) {
         return Err(ManeuverViolation::AlterationNotHeld);
     }
     Ok(())

@@ -5,7 +5,7 @@
 //! ahead in time (`t_cpa > 0`: the vessels are still closing).
 
 use crate::parameters::RuleParameters;
-use crate::rules::within_mtd;
+use crate::rules::{is_close_approach, within_mtd};
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::{Cpa, closest_point_of_approach};
@@ -43,9 +43,8 @@ pub fn assess_risk(
         target.position_m,
         target.velocity_mps(),
     );
-    let at_risk = within_mtd(range_m, parameters)
-        && cpa.distance_m < parameters.risk_cpa_m
-        && cpa.time_s > 0.0;
+    let at_risk =
+        within_mtd(range_m, parameters) && is_close_approach(&cpa, parameters) && cpa.time_s > 0.0;
     RiskAssessment {
         range_m,
         cpa,

@@ -10,10 +10,12 @@
 //! | judgement | predicate | rule |
 //! |---|---|---|
 //! | the target inside the minimum threshold distance (MTD) | [`within_mtd`] | 7 |
+//! | a closest approach near enough to be a risk | [`is_close_approach`] | 7 |
 //! | course change from the course held when the encounter began | [`course_change_rad`] | 8, 16, 17 |
 //! | a detectable turn (beyond the 2° tolerance) | [`is_detectable_turn`] | 16 |
 //! | a turn to port of the reference course | [`is_port_turn`] | 14(a), 15, 17(c) |
 //! | a readily apparent alteration (30°) | [`is_readily_apparent`], measured: [`is_measured_readily_apparent`] | 8(b), 16 |
+//! | a readily apparent alteration eased back (no longer held) | [`is_alteration_eased_back`] | 8(a), 16 |
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
@@ -36,12 +38,11 @@
 //! `d_th` is the distance the planner and the scoring require, also not a
 //! collision test.
 
-use crate::encounter::{Encounter, Role};
-use crate::latch::EncounterLatch;
+use crate::encounter::{Encounter, EncounterLatch, Role};
 use crate::parameters::RuleParameters;
 use glam::DVec2;
 use std::f64::consts::PI;
-use vorrt_geometry::angle;
+use vorrt_geometry::{Cpa, angle};
 
 /// Whether a target at `range_m` is inside the minimum threshold distance
 /// ([`mtd_m`](RuleParameters::mtd_m)): nearer, it can be a risk of collision
@@ -57,6 +58,26 @@ use vorrt_geometry::angle;
 #[must_use]
 pub fn within_mtd(range_m: f64, parameters: &RuleParameters) -> bool {
     range_m < parameters.mtd_m
+}
+
+/// Rule 7: whether a closest approach (from
+/// [`closest_point_of_approach`](vorrt_geometry::closest_point_of_approach),
+/// at present velocities) is near enough to be a risk of collision: under
+/// [`risk_cpa_m`](RuleParameters::risk_cpa_m). The risk test
+/// ([`assess_risk`](crate::assess_risk)) and the give-way check of early
+/// action ([`check_action`](crate::check_action)) both judge it with this.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_close_approach, RuleParameters};
+/// use vorrt_geometry::Cpa;
+/// let params = RuleParameters::default();
+/// assert!(is_close_approach(&Cpa { time_s: 60.0, distance_m: 500.0 }, &params));
+/// assert!(!is_close_approach(&Cpa { time_s: 60.0, distance_m: params.risk_cpa_m }, &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_close_approach(cpa: &Cpa, parameters: &RuleParameters) -> bool {
+    cpa.distance_m < parameters.risk_cpa_m
 }
 
 /// The signed course change from the reference course (the course held when
@@ -276,6 +297,27 @@ pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) 
     course_change_rad.abs() >= parameters.apparent_turn_rad
 }
 
+/// Rules 8(a), 16: whether a readily apparent alteration has been eased back,
+/// so that it is no longer held: the course change in the alteration's
+/// direction (`change_toward_rad`: the signed change from
+/// [`course_change_rad`], times the side the alteration went to) has fallen
+/// more than [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) (not
+/// detectable) below [`apparent_turn_rad`](RuleParameters::apparent_turn_rad).
+/// The prospective check ([`check_action`](crate::check_action)) and the
+/// retrospective scoring both judge holding with it.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_alteration_eased_back, RuleParameters};
+/// let params = RuleParameters::default();
+/// assert!(!is_alteration_eased_back(29f64.to_radians(), &params)); // within 2° of 30°
+/// assert!(is_alteration_eased_back(10f64.to_radians(), &params));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_alteration_eased_back(change_toward_rad: f64, parameters: &RuleParameters) -> bool {
+    change_toward_rad < parameters.apparent_turn_rad - parameters.turn_tolerance_rad
+}
+
 /// The rounding allowed when an angle computed from positions is compared
 /// with a threshold it should meet exactly, radians (about 6e-8 degrees).
 pub const ANGLE_ROUNDING_RAD: f64 = 1e-9;
@@ -477,6 +519,7 @@ pub fn must_stand_on(encounter: Encounter, may_act: bool) -> bool {
 /// ```
 #[inline]
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn contact_range_m(length_a_m: f64, length_b_m: f64) -> f64 {
     0.5 * (length_a_m + length_b_m)
 }
@@ -493,14 +536,15 @@ pub fn contact_range_m(length_a_m: f64, length_b_m: f64) -> f64 {
 /// ```
 #[inline]
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
     distance_m < contact_range_m(length_a_m, length_b_m)
 }
 
 /// Whether two vessels of lengths `length_a_m` and `length_b_m`, their
 /// reference positions `distance_m` apart, keep the clearance `clearance_m`
-/// (d_th) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
-/// The planner keeps its reference points that far apart, so "d_th kept" is
+/// (`d_th`) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
+/// The planner keeps its reference points that far apart, so "`d_th` kept" is
 /// never hull contact (`docs/architecture.md`).
 ///
 /// ```
@@ -510,6 +554,7 @@ pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
 /// assert!(keeps_clearance(350.0, 150.0, 150.0, 200.0));
 /// ```
 #[must_use]
+#[expect(clippy::similar_names, reason = "a and b name the two vessels")]
 pub fn keeps_clearance(
     distance_m: f64,
     length_a_m: f64,

@@ -37,6 +37,18 @@ fn leg_at(plan: &[Leg], time_s: f64) -> Leg {
 }
 
 /// Records both vessels every `step_s` from 0 to `duration_s`.
+#[expect(
+    clippy::cast_possible_truncation,
+    reason = "test step counts and indices are small whole numbers"
+)]
+#[expect(
+    clippy::cast_sign_loss,
+    reason = "test step counts and indices are small whole numbers"
+)]
+#[expect(
+    clippy::cast_precision_loss,
+    reason = "test step counts and indices are small whole numbers"
+)]
 fn simulate(
     own_start_m: DVec2,
     own_plan: &[Leg],
@@ -48,8 +60,8 @@ fn simulate(
     let mut own = VesselState::new(own_start_m, 0.0, 0.0, 50.0);
     let mut target = VesselState::new(target_start_m, 0.0, 0.0, 80.0);
     let mut samples = Vec::new();
-    let steps = (duration_s / step_s).round() as usize;
-    for step in 0..=steps {
+    let step_count = (duration_s / step_s).round() as usize;
+    for step in 0..=step_count {
         let time_s = step as f64 * step_s;
         for (vessel, plan) in [(&mut own, own_plan), (&mut target, target_plan)] {
             let l = leg_at(plan, time_s);
@@ -113,6 +125,7 @@ fn crossing_from_port(own_plan: &[Leg]) -> EncounterAssessment {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn head_on_starboard_turn_is_compliant() {
     let a = head_on(&[
         leg(0.0, 0.0, 6.0),
@@ -130,6 +143,7 @@ fn head_on_starboard_turn_is_compliant() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn head_on_port_turn_is_named() {
     let a = head_on(&[
         leg(0.0, 0.0, 6.0),
@@ -176,6 +190,7 @@ fn halving_speed_is_apparent_action() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn crossing_give_way_passing_astern_is_compliant() {
     let a = crossing_from_starboard(
         &[
@@ -220,6 +235,7 @@ fn crossing_give_way_port_turn_is_named() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn stand_on_that_keeps_course_is_compliant() {
     let a = crossing_from_port(&[leg(0.0, 0.0, 6.0)]);
     assert_eq!(a.encounter, Encounter::CrossingStandOn);
@@ -314,6 +330,7 @@ fn overtaking_that_cuts_across_the_bow_crossed_ahead() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn a_closer_pass_never_scores_higher_safety() {
     // Head-on recordings without action at lateral offsets 0..600 m.
     let rules = RuleParameters::default();
@@ -361,6 +378,7 @@ fn head_on_pass(length_m: f64, offset_m: f64) -> EncounterAssessment {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn collision_is_hull_contact_from_the_lengths() {
     // The case: two 150 m ships passing 60 m apart touch (contact
     // range 150 m), far outside the scoring's zero-safety range of 25 m.
@@ -400,6 +418,7 @@ proptest! {
     /// Safety never increases as the minimum range shrinks, stays in [0, 1],
     /// and is 0 at or under the collision range.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn safety_is_monotone_and_bounded(a in 0.0..1000.0f64, b in 0.0..1000.0f64) {
         let scoring = ScoringParameters::default();
         let (near, far) = if a <= b { (a, b) } else { (b, a) };
@@ -416,6 +435,7 @@ proptest! {
     /// zero-safety range gives safety 0 and overall 0; a collision is found
     /// exactly when the hulls touched, and scores 0.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn scores_always_lie_in_the_unit_interval(
         target_x in -6000.0..6000.0f64,
         target_y in -6000.0..6000.0f64,
@@ -468,6 +488,7 @@ proptest! {
     /// (the target's track passes through ownship's position at one instant)
     /// always scores safety 0.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn a_collision_scores_zero_safety(
         meet_at in 100.0..1000.0f64,
         target_course in 0.0..360.0f64,

@@ -384,20 +384,18 @@ proptest! {
     /// A new latch takes the encounter type the classifier gives at the moment
     /// risk arises, with ownship's course and speed as its reference.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn new_latch_records_classification_and_reference((own, target) in converging_encounter()) {
         let parameters = RuleParameters::default();
         let encounter = classify(&own, &target, &parameters);
-        match update_latch(None, &own, &target, 12.0, &parameters) {
-            Some(latched) => {
-                prop_assert_eq!(latched.encounter, encounter);
-                prop_assert_eq!(latched.reference_course_rad, own.course_rad);
-                prop_assert_eq!(latched.reference_speed_mps, own.speed_mps);
-                prop_assert_eq!(latched.latched_at_s, 12.0);
-            }
-            None => {
-                let far = own.range_to(&target) >= parameters.mtd_m;
-                prop_assert!(far || encounter == Encounter::None, "no latch for {}", encounter);
-            }
+        if let Some(latched) = update_latch(None, &own, &target, 12.0, &parameters) {
+            prop_assert_eq!(latched.encounter, encounter);
+            prop_assert_eq!(latched.reference_course_rad, own.course_rad);
+            prop_assert_eq!(latched.reference_speed_mps, own.speed_mps);
+            prop_assert_eq!(latched.latched_at_s, 12.0);
+        } else {
+            let far = own.range_to(&target) >= parameters.mtd_m;
+            prop_assert!(far || encounter == Encounter::None, "no latch for {}", encounter);
         }
     }
 }

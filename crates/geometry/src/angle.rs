@@ -103,6 +103,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn normalisation_ranges() {
         assert!((normalize_2pi(-FRAC_PI_2) - 3.0 * FRAC_PI_2).abs() < 1e-12);
         assert!((normalize_pi(3.0 * FRAC_PI_2) + FRAC_PI_2).abs() < 1e-12);

@@ -34,6 +34,10 @@ pub struct Cpa {
 
 /// The CPA over the unbounded future `t ≥ 0`.
 #[must_use]
+#[expect(
+    clippy::similar_names,
+    reason = "a and b name the two vessels, as P_A and P_B do in the paper"
+)]
 pub fn closest_point_of_approach(
     position_a_m: DVec2,
     velocity_a_mps: DVec2,
@@ -50,6 +54,10 @@ pub fn closest_point_of_approach(
 /// The CPA over the segment `t ∈ [0, horizon_s]` (a non-positive or NaN
 /// horizon gives the present distance at `t = 0`).
 #[must_use]
+#[expect(
+    clippy::similar_names,
+    reason = "a and b name the two vessels, as P_A and P_B do in the paper"
+)]
 pub fn closest_point_of_approach_within(
     position_a_m: DVec2,
     velocity_a_mps: DVec2,
@@ -89,6 +97,7 @@ mod tests {
     use super::*;
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn opening_vessels_have_cpa_now() {
         let cpa = closest_point_of_approach(
             DVec2::ZERO,
@@ -130,6 +139,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn nan_horizon_is_now() {
         let cpa = closest_point_of_approach_within(
             DVec2::ZERO,

@@ -70,6 +70,7 @@ mod tests {
     use super::*;
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn minkowski_sum_of_reflection_is_centred_on_difference() {
         let a = Disc::new(DVec2::new(10.0, 5.0), 3.0);
         let b = Disc::new(DVec2::new(40.0, -5.0), 4.0);
@@ -87,6 +88,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn negative_radius_clamps_to_zero() {
         assert_eq!(Disc::new(DVec2::ZERO, -2.0).radius_m, 0.0);
     }

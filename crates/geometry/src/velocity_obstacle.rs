@@ -44,6 +44,10 @@ impl VelocityObstacle {
     /// The velocity obstacle of B (at `position_b_m`, moving at `velocity_b_mps`)
     /// for A (at `position_a_m`), with `combined_radius_m = r_A + r_B`.
     #[must_use]
+    #[expect(
+        clippy::similar_names,
+        reason = "a and b name the two vessels, as P_A and P_B do in the paper"
+    )]
     pub fn new(
         position_a_m: DVec2,
         position_b_m: DVec2,
@@ -104,6 +108,10 @@ impl VelocityObstacle {
     /// ```
     #[inline]
     #[must_use]
+    #[expect(
+        clippy::similar_names,
+        reason = "a and b name the two vessels, as P_A and P_B do in the paper"
+    )]
     pub fn blocks(
         position_a_m: DVec2,
         position_b_m: DVec2,

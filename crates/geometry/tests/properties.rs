@@ -198,6 +198,7 @@ proptest! {
     /// normalize_2pi lands in [0, 2π), normalize_pi in (-π, π], and both
     /// differ from the input by a whole number of turns.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn normalisation_stays_in_range_and_preserves_direction(raw in any_angle()) {
         let full = angle::normalize_2pi(raw);
         let half = angle::normalize_pi(raw);

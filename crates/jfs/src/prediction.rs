@@ -383,6 +383,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn holding_target_turns_for_its_goal_after_its_hold() {
         // East at 5 m/s for 100 s, then north for (500, 1000): 1000 m more.
         let target = TargetState::holding_course_then_toward_goal(

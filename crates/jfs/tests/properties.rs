@@ -49,6 +49,7 @@ proptest! {
     /// A target without a goal holds course and speed: after t seconds it is
     /// at P + V t, with course and speed unchanged.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn constant_velocity_target_moves_speed_times_time(vessel in vessel(), duration_s in duration()) {
         let predicted = TargetState::constant_velocity(vessel).predict(duration_s);
         let expected = vessel.position_m + vessel.velocity_mps() * duration_s;
@@ -60,6 +61,7 @@ proptest! {
     /// Before it arrives, a goal-bound target covers speed x time along the
     /// straight line to its goal.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn goal_bound_target_moves_speed_times_time_before_arrival(
         vessel in vessel(), goal in position(), fraction in 0.0..0.999f64,
     ) {
@@ -83,6 +85,7 @@ proptest! {
     /// the segment start -> goal, its distance to the goal never grows with
     /// time, and once the arrival time has passed it is at the goal, stopped.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn goal_bound_target_never_overshoots(
         vessel in vessel(), goal in position(), first_s in duration(), extra_s in duration(),
     ) {
@@ -114,6 +117,7 @@ proptest! {
     /// Prediction is memoryless: predicting a + b seconds equals predicting a
     /// and then b (the planner predicts targets from its root to any node).
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn prediction_composes(target in target(), first_s in duration(), second_s in duration()) {
         let at_once = target.predict(first_s + second_s);
         let in_two = target.predict(first_s).predict(second_s);
@@ -154,6 +158,7 @@ proptest! {
     /// sample, or onto it when it is nearer, on the course toward it, in
     /// distance / speed seconds.
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn ownship_step_moves_exactly_the_step_length(
         own in vessel(), point in position(), step_m in 1.0..1_000.0f64,
     ) {

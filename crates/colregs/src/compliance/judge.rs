@@ -275,6 +275,10 @@ impl Findings {
 /// vessel may act (17(a)(ii)) only one beyond the stand-on tolerance: drift
 /// within it is not action, nor is holding such a course into the action
 /// range. The first such port turn, if the target was then on the port side.
+#[expect(
+    clippy::float_cmp,
+    reason = "a course is newly taken when it differs at all from the last"
+)]
 fn first_port_turn_for_port_vessel<'a>(
     in_force: &'a [EncounterSample],
     latch: &EncounterLatch,

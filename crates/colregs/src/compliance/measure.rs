@@ -9,8 +9,8 @@ use crate::observed::turn_episodes;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    course_change_rad, in_contact, is_detectable_turn, is_measured_readily_apparent,
-    keeps_clearance,
+    course_change_rad, in_contact, is_alteration_eased_back, is_detectable_turn,
+    is_measured_readily_apparent, keeps_clearance,
 };
 use crate::vessel::VesselState;
 use glam::DVec2;
@@ -99,7 +99,7 @@ pub(super) struct Measurements {
     pub(super) time_of_min_s: f64,
     /// Whether the hulls touched at the closest approach ([`in_contact`]).
     pub(super) in_contact: bool,
-    /// Whether d_th was kept between the hulls ([`keeps_clearance`]).
+    /// Whether `d_th` was kept between the hulls ([`keeps_clearance`]).
     pub(super) clearance_kept: bool,
     /// Side of ownship on which the target lay at the closest approach.
     pub(super) passing_side: Option<PassingSide>,
@@ -169,18 +169,14 @@ impl Measurements {
         scoring: &ScoringParameters,
     ) -> Self {
         let (min_distance_m, time_of_min_s, in_contact, clearance_kept, passing_side) =
-            match closest_approach(samples) {
-                Some((distance, time, index)) => {
-                    let at = &samples[index];
-                    let (own_m, target_m) = (at.own.length_m, at.target.length_m);
-                    (
-                        distance,
-                        time,
-                        in_contact(distance, own_m, target_m),
-                        keeps_clearance(distance, own_m, target_m, scoring.clearance_m),
-                        side_at(samples, index, time),
-                    )
-                }
+            match closest_approach(samples, scoring.clearance_m) {
+                Some(closest) => (
+                    closest.distance_m,
+                    closest.time_s,
+                    closest.in_contact,
+                    closest.clearance_kept,
+                    side_at(samples, closest.step, closest.time_s),
+                ),
                 None => (f64::INFINITY, latch.latched_at_s, false, true, None),
             };
         let in_force = window.samples(samples);
@@ -268,11 +264,10 @@ fn eased_back(
         .position(|s| is_measured_readily_apparent(turn_of(latch, s), parameters))
     {
         let side = turn_of(latch, &before_cpa[reached]).signum();
-        let floor = parameters.apparent_turn_rad - parameters.turn_tolerance_rad;
         return before_cpa[reached..]
             .iter()
             .map(|s| turn_of(latch, s))
-            .find(|turn| side * turn < floor)
+            .find(|turn| is_alteration_eased_back(side * turn, parameters))
             .map(EasedBack::Course);
     }
     let apparent_reduction_mps =
@@ -287,9 +282,31 @@ fn eased_back(
         .map(EasedBack::Speed)
 }
 
-/// The closest approach over the run: (distance, time, index of the sample
-/// that starts the step holding it).
-pub(crate) fn closest_approach(samples: &[EncounterSample]) -> Option<(f64, f64, usize)> {
+/// The closest approach over a recorded run and what it means for the hulls:
+/// the one closest-approach verdict the scoring ([`Measurements`]) and the
+/// judgement as observed (`observed::judge`) both use.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ClosestApproach {
+    /// The minimum range, metres (between samples, from the straight relative
+    /// track of each step).
+    pub(crate) distance_m: f64,
+    /// When it occurred, seconds (the recording's time).
+    pub(crate) time_s: f64,
+    /// Index of the sample that starts the step holding it.
+    pub(crate) step: usize,
+    /// Whether the hulls touched ([`in_contact`]), on the lengths at `step`.
+    pub(crate) in_contact: bool,
+    /// Whether `clearance_m` (`d_th`) was kept between the hulls
+    /// ([`keeps_clearance`]), on the lengths at `step`.
+    pub(crate) clearance_kept: bool,
+}
+
+/// The closest approach over the run, judged against `clearance_m`; `None`
+/// with no samples.
+pub(crate) fn closest_approach(
+    samples: &[EncounterSample],
+    clearance_m: f64,
+) -> Option<ClosestApproach> {
     let first = samples.first()?;
     let mut best = (first.range_m(), first.time_s, 0);
     for (index, pair) in samples.windows(2).enumerate() {
@@ -307,7 +324,16 @@ pub(crate) fn closest_approach(samples: &[EncounterSample]) -> Option<(f64, f64,
             best = (distance_m, time_s, index);
         }
     }
-    Some(best)
+    let (distance_m, time_s, step) = best;
+    let at = &samples[step];
+    let (own_m, target_m) = (at.own.length_m, at.target.length_m);
+    Some(ClosestApproach {
+        distance_m,
+        time_s,
+        step,
+        in_contact: in_contact(distance_m, own_m, target_m),
+        clearance_kept: keeps_clearance(distance_m, own_m, target_m, clearance_m),
+    })
 }
 
 /// Side of ownship on which the target lies at the closest approach.

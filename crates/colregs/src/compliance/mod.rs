@@ -49,7 +49,7 @@
 //!
 //! ## Violations, by role
 //! - Always: [`ClearanceViolated`](ComplianceViolation::ClearanceViolated)
-//!   when the minimum range is under `clearance_m` (d_th) and
+//!   when the minimum range is under `clearance_m` (`d_th`) and
 //!   [`Collision`](ComplianceViolation::Collision) when the hulls touched at
 //!   the closest approach: the minimum range under half the sum of the two
 //!   lengths ([`in_contact`](crate::rules::in_contact), the workspace's one

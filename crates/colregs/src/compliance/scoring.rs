@@ -65,14 +65,14 @@ impl Default for PenaltyWeights {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ScoringParameters {
-    /// Clearance d_th (r_min): a minimum range at or above this is fully
+    /// Clearance `d_th` (`r_min`): a minimum range at or above this is fully
     /// safe; under it is a [`ClearanceViolated`](super::ComplianceViolation::ClearanceViolated).
-    /// Default 200 m (the paper's open-sea d_th; use 100 m in a TSS).
+    /// Default 200 m (the paper's open-sea `d_th`; use 100 m in a TSS).
     pub clearance_m: f64,
-    /// Near-miss range r_nm, where the safety score is `near_miss_safety`.
+    /// Near-miss range `r_nm`, where the safety score is `near_miss_safety`.
     /// Default 100 m.
     pub near_miss_m: f64,
-    /// Zero-safety range r_col: the bottom of the safety scale, at or under
+    /// Zero-safety range `r_col`: the bottom of the safety scale, at or under
     /// which the safety score is 0. Default 25 m. Not a collision test: a
     /// [`Collision`](super::ComplianceViolation::Collision) is hull contact
     /// from the two lengths ([`in_contact`](crate::rules::in_contact)), and a
@@ -88,7 +88,7 @@ pub struct ScoringParameters {
     /// Grace time: where risk arose nearer than `late_action_range_m`, an
     /// action begun within this long after the latch is early enough (the
     /// risk could not have been met earlier); one begun later is late.
-    /// Default 60 s (one observation window; CommonOcean's rule monitor,
+    /// Default 60 s (one observation window; `CommonOcean`'s rule monitor,
     /// Krasowski and Althoff, allows about 2 minutes).
     pub reaction_time_s: f64,
     /// A course over ground that differs from the reference course by at

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case", tag = "kind")]
 pub enum ComplianceViolation {
-    /// The minimum range was under the clearance d_th (rules 8(d), 16: "keep
+    /// The minimum range was under the clearance `d_th` (rules 8(d), 16: "keep
     /// well clear"). A safety finding, not a rule violation.
     ClearanceViolated {
         /// The minimum range, metres.

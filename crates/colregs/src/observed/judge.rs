@@ -12,7 +12,7 @@ use crate::compliance::{
 };
 use crate::error::ColregsError;
 use crate::latch::{EncounterLatch, update_latch_steady};
-use crate::rules::{acting_for_any, in_contact, keeps_clearance};
+use crate::rules::acting_for_any;
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -68,9 +68,9 @@ pub struct ObservedEncounter {
     pub min_distance_m: f64,
     /// When it occurred, seconds.
     pub time_of_min_s: f64,
-    /// Whether the hulls touched ([`in_contact`]).
+    /// Whether the hulls touched ([`in_contact`](crate::rules::in_contact)).
     pub collision: bool,
-    /// Whether the minimum distance kept the clearance d_th.
+    /// Whether the minimum distance kept the clearance `d_th`.
     pub clearance_kept: bool,
     /// The assessment of the encounter on the observed states (`None` when
     /// no encounter arose).
@@ -253,20 +253,16 @@ fn judge_target(
             assessment: Some(assessment),
         };
     }
-    let (min_distance_m, time_of_min_s, collision, clearance_kept) = match closest_approach(samples)
-    {
-        Some((distance_m, time_s, index)) => {
-            let at = &samples[index];
-            let (own_m, target_m) = (at.own.length_m, at.target.length_m);
-            (
-                distance_m,
-                time_s,
-                in_contact(distance_m, own_m, target_m),
-                keeps_clearance(distance_m, own_m, target_m, scoring.clearance_m),
-            )
-        }
-        None => (f64::INFINITY, 0.0, false, true),
-    };
+    let (min_distance_m, time_of_min_s, collision, clearance_kept) =
+        match closest_approach(samples, scoring.clearance_m) {
+            Some(closest) => (
+                closest.distance_m,
+                closest.time_s,
+                closest.in_contact,
+                closest.clearance_kept,
+            ),
+            None => (f64::INFINITY, 0.0, false, true),
+        };
     let mut findings = Vec::new();
     if !clearance_kept {
         findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });

@@ -95,7 +95,7 @@
 //!   (2 nm) and ownship gives way to no other target; and in a crossing no
 //!   port turn for a vessel on the port side (17(c)).
 //! - **Safety**, whatever the role: minimum distance (exact between
-//!   samples), hull contact ([`in_contact`](crate::rules::in_contact)), d_th
+//!   samples), hull contact ([`in_contact`](crate::rules::in_contact)), `d_th`
 //!   kept.
 //!
 //! The run is **compliant** when it has no finding: no track finding and no
@@ -112,11 +112,11 @@
 //! | [`apparent_turn_rad`](crate::RuleParameters::apparent_turn_rad) | 30° | readily apparent course change (Woerner 2019; Minne 2017) |
 //! | [`apparent_speed_reduction_fraction`](crate::ScoringParameters::apparent_speed_reduction_fraction) | 0.5 | readily apparent speed change: half the speed (Woerner 2019) |
 //! | [`late_action_range_m`](crate::ScoringParameters::late_action_range_m) | 2 nm | give-way action begun at 2 nm or more (Woerner 2019) |
-//! | [`reaction_time_s`](crate::ScoringParameters::reaction_time_s) | 60 s | grace where risk arises nearer (one window; CommonOcean's monitor allows about 2 min) |
+//! | [`reaction_time_s`](crate::ScoringParameters::reaction_time_s) | 60 s | grace where risk arises nearer (one window; `CommonOcean`'s monitor allows about 2 min) |
 //! | [`stand_on_course_tolerance_rad`](crate::RuleParameters::stand_on_course_tolerance_rad) | 15° | stand-on drift (NTNU evaluator) |
 //! | [`stand_on_speed_tolerance_mps`](crate::RuleParameters::stand_on_speed_tolerance_mps) | 1 m/s | stand-on drift (NTNU evaluator) |
 //! | [`stand_on_action_range_m`](crate::RuleParameters::stand_on_action_range_m) | 2 nm | rule 17(a)(ii) action range (Woerner 2019) |
-//! | [`clearance_m`](crate::ScoringParameters::clearance_m) | 200 m | d_th (the paper's open-sea value; a run passes its own) |
+//! | [`clearance_m`](crate::ScoringParameters::clearance_m) | 200 m | `d_th` (the paper's open-sea value; a run passes its own) |
 //! | [`max_turn_rate_rad_s`](ObservedParameters::max_turn_rate_rad_s) | none | the vessel's limit, when the recording has one |
 //!
 //! ## Example

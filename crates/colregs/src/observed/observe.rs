@@ -111,18 +111,18 @@ pub fn over_ground_from(
     observed
 }
 
-/// The position at `time_s`, interpolated between the samples at or before
+/// The position at `at_s`, interpolated between the samples at or before
 /// `upto` (the sample whose window this is).
-fn position_at(times_s: &[f64], positions_m: &[DVec2], time_s: f64, upto: usize) -> DVec2 {
-    // The last sample at or before `time_s`.
-    let after = times_s[..=upto].partition_point(|t| *t <= time_s);
+fn position_at(times_s: &[f64], positions_m: &[DVec2], at_s: f64, upto: usize) -> DVec2 {
+    // The last sample at or before `at_s`.
+    let after = times_s[..=upto].partition_point(|t| *t <= at_s);
     let before = after.saturating_sub(1);
     if after > upto || after == 0 {
         return positions_m[before];
     }
     let (t0, t1) = (times_s[before], times_s[after]);
     let fraction = if t1 > t0 {
-        ((time_s - t0) / (t1 - t0)).clamp(0.0, 1.0)
+        ((at_s - t0) / (t1 - t0)).clamp(0.0, 1.0)
     } else {
         0.0
     };

@@ -24,7 +24,7 @@ pub struct ObservedParameters {
     /// readily apparent alteration, the stand-on tolerances (15°, 1 m/s)
     /// and action range (2 nm).
     pub rules: RuleParameters,
-    /// The evaluators' thresholds: clearance d_th, the 5° action detection,
+    /// The evaluators' thresholds: clearance `d_th`, the 5° action detection,
     /// the 20 % speed drop, the 2 nm early-action range, the 60 s grace
     /// time, the halved speed, the penalty weights.
     pub scoring: ScoringParameters,

@@ -78,16 +78,16 @@ impl<'a> Sailor<'a> {
 fn sail(mut own: Sailor<'_>, mut target: Sailor<'_>, duration_s: f64) -> Recording {
     let mut times_s = Vec::new();
     let (mut own_m, mut own_courses, mut target_m) = (Vec::new(), Vec::new(), Vec::new());
-    let mut time_s = 0.0;
-    while time_s <= duration_s {
-        times_s.push(time_s);
+    let mut now_s = 0.0;
+    while now_s <= duration_s {
+        times_s.push(now_s);
         own_m.push(own.position_m);
         own_courses.push(own.course_rad);
         target_m.push(target.position_m);
         let (own_before, target_before) = (own.position_m, target.position_m);
-        own.step(time_s, target_before);
-        target.step(time_s, own_before);
-        time_s += STEP_S;
+        own.step(now_s, target_before);
+        target.step(now_s, own_before);
+        now_s += STEP_S;
     }
     Recording {
         times_s,
@@ -184,6 +184,10 @@ fn head_on_port_turn_is_a_finding() {
 }
 
 #[test]
+#[expect(
+    clippy::cast_possible_truncation,
+    reason = "test step counts and indices are small whole numbers"
+)]
 fn head_on_zig_zag_of_small_alterations_breaks_rule_8b() {
     // 10° to starboard and back every 90 s: each alteration detectable,
     // none readily apparent.
@@ -412,6 +416,7 @@ fn small_counter_moves_do_not_split_an_episode() {
 
 proptest! {
     #[test]
+    #[expect(clippy::cast_precision_loss, reason = "test step counts and indices are small whole numbers")]
     fn observed_course_of_a_straight_track_is_its_course(
         course_deg in 0.0f64..360.0,
         speed_mps in 0.5f64..15.0,
@@ -430,6 +435,9 @@ proptest! {
     }
 
     #[test]
+    #[expect(clippy::cast_possible_truncation, reason = "test step counts and indices are small whole numbers")]
+    #[expect(clippy::cast_sign_loss, reason = "test step counts and indices are small whole numbers")]
+    #[expect(clippy::cast_precision_loss, reason = "test step counts and indices are small whole numbers")]
     fn rate_of_turn_of_a_constant_rate_arc_is_the_rate(
         rate_deg_s in 0.05f64..3.0,
         speed_mps in 1.0f64..15.0,

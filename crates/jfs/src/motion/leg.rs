@@ -1,9 +1,8 @@
 //! One leg of ownship's motion: its geometry (a turn on an arc, then a
 //! straight run) and its speed profile (a constant rate of speed change from
-//! the speed it starts at to the speed it settles at), and the straight
-//! pieces the checks judge it by.
+//! the speed it starts at to the speed it settles at). The straight pieces
+//! the checks judge it by are cut in the `pieces` module.
 
-use super::pieces::Pieces;
 use super::{CHORD_ANGLE_RAD, Pose, SPEED_PIECE_S, starboard_unit};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -53,46 +52,6 @@ pub struct Leg {
     /// leg is sailed at `speed_mps` throughout).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub speed_change: Option<SpeedChange>,
-}
-
-/// A straight piece of a leg, as the checks see it: an arc is cut into
-/// chords, a change of speed into pieces of at most [`SPEED_PIECE_S`], each
-/// sailed at its mean velocity.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Piece {
-    /// Where the piece starts, metres.
-    pub start_m: DVec2,
-    /// Course along the piece, radians.
-    pub course_rad: f64,
-    /// Mean velocity along the piece, m/s.
-    pub velocity_mps: DVec2,
-    /// Seconds from the leg's start to the piece's start.
-    pub elapsed_s: f64,
-    /// Duration of the piece, seconds.
-    pub duration_s: f64,
-    /// Whether the piece is a chord of the turn (true) or part of the settled
-    /// straight run (false).
-    pub turning: bool,
-    /// Whether ownship's speed changes along the piece (it is part of the
-    /// leg's change of speed, not yet at the settled speed).
-    pub changing_speed: bool,
-}
-
-impl Piece {
-    /// Whether the piece is part of the manoeuvre's transition (a chord of
-    /// the turn, or the change of speed) rather than the settled motion.
-    #[must_use]
-    pub fn transient(&self) -> bool {
-        self.turning || self.changing_speed
-    }
-}
-
-impl Piece {
-    /// Where the piece ends, metres.
-    #[must_use]
-    pub fn end_m(&self) -> DVec2 {
-        self.start_m + self.velocity_mps * self.duration_s
-    }
 }
 
 impl Leg {
@@ -153,6 +112,10 @@ impl Leg {
     /// assert_eq!(stop.speed_at(200.0), 0.0);
     /// ```
     #[must_use]
+    #[expect(
+        clippy::float_cmp,
+        reason = "any difference of speed is a change of speed"
+    )]
     pub fn from_speed(self, start_speed_mps: f64, rate_mps2: f64) -> Self {
         let start_speed_mps = start_speed_mps.max(0.0);
         let changes = start_speed_mps != self.speed_mps
@@ -588,49 +551,5 @@ impl Leg {
     #[must_use]
     pub fn piece_error_m(&self) -> f64 {
         self.chord_error_m() + self.timing_error_m()
-    }
-
-    /// The leg as straight pieces, each sailed at its mean velocity: the arc
-    /// cut into chords of at most [`CHORD_ANGLE_RAD`], the straight run into
-    /// pieces of at most `max_piece_m` metres (a whole run when it is
-    /// shorter), and the change of speed, where there is one, into pieces of
-    /// at most [`SPEED_PIECE_S`] seconds. An instantaneous turn has no chord.
-    pub fn pieces(&self, max_piece_m: f64) -> impl Iterator<Item = Piece> + '_ {
-        let turn = self.turn_rad.abs();
-        let chords = if self.turn_radius_m > 0.0 && turn > 0.0 {
-            (turn / CHORD_ANGLE_RAD).ceil().max(1.0) as usize
-        } else {
-            0
-        };
-        let runs = if self.straight_m > 0.0 {
-            if max_piece_m > 0.0 && self.straight_m > max_piece_m {
-                (self.straight_m / max_piece_m).ceil() as usize
-            } else {
-                1
-            }
-        } else {
-            0
-        };
-        let change_s = self.speed_change_s();
-        let changes = if change_s > 0.0 {
-            (change_s / SPEED_PIECE_S).ceil() as usize
-        } else {
-            0
-        };
-        Pieces {
-            leg: self,
-            index: 0,
-            arc_m: self.arc_m(),
-            length_m: self.length_m(),
-            chords: (0, chords),
-            runs: (0, runs),
-            changes: (0, changes),
-            change_s,
-            change_m: self.speed_change_m(),
-            from_m: 0.0,
-            turn_end_m: self.turn_end_m(),
-            unit: angle::course_to_unit(self.course_rad),
-            last_to: None,
-        }
     }
 }

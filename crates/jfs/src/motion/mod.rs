@@ -28,7 +28,8 @@ use vorrt_geometry::angle;
 mod leg;
 mod pieces;
 
-pub use leg::{Leg, Piece, SpeedChange};
+pub use leg::{Leg, SpeedChange};
+pub use pieces::Piece;
 
 /// A planned turn's radius in ship lengths when none is given: IMO MSC.137(76)
 /// caps the hard-over tactical diameter at 5 lengths (radius 2.5 L) and

@@ -1,8 +1,104 @@
-//! The straight pieces a leg is checked by ([`Leg::pieces`]).
+//! The straight pieces a leg is checked by ([`Leg::pieces`]): [`Piece`], and
+//! the walk that cuts a leg into them.
 
-use super::leg::{Leg, Piece, SAME_POINT_M};
+use super::leg::{Leg, SAME_POINT_M};
+use super::{CHORD_ANGLE_RAD, SPEED_PIECE_S};
 use glam::DVec2;
 use vorrt_geometry::angle;
+
+/// A straight piece of a leg, as the checks see it: an arc is cut into
+/// chords, a change of speed into pieces of at most [`SPEED_PIECE_S`], each
+/// sailed at its mean velocity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Piece {
+    /// Where the piece starts, metres.
+    pub start_m: DVec2,
+    /// Course along the piece, radians.
+    pub course_rad: f64,
+    /// Mean velocity along the piece, m/s.
+    pub velocity_mps: DVec2,
+    /// Seconds from the leg's start to the piece's start.
+    pub elapsed_s: f64,
+    /// Duration of the piece, seconds.
+    pub duration_s: f64,
+    /// Whether the piece is a chord of the turn (true) or part of the settled
+    /// straight run (false).
+    pub turning: bool,
+    /// Whether ownship's speed changes along the piece (it is part of the
+    /// leg's change of speed, not yet at the settled speed).
+    pub changing_speed: bool,
+}
+
+impl Piece {
+    /// Whether the piece is part of the manoeuvre's transition (a chord of
+    /// the turn, or the change of speed) rather than the settled motion.
+    #[must_use]
+    pub fn transient(&self) -> bool {
+        self.turning || self.changing_speed
+    }
+}
+
+impl Piece {
+    /// Where the piece ends, metres.
+    #[must_use]
+    pub fn end_m(&self) -> DVec2 {
+        self.start_m + self.velocity_mps * self.duration_s
+    }
+}
+
+impl Leg {
+    /// The leg as straight pieces, each sailed at its mean velocity: the arc
+    /// cut into chords of at most [`CHORD_ANGLE_RAD`], the straight run into
+    /// pieces of at most `max_piece_m` metres (a whole run when it is
+    /// shorter), and the change of speed, where there is one, into pieces of
+    /// at most [`SPEED_PIECE_S`] seconds. An instantaneous turn has no chord.
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a piece count: the ceiling of a non-negative ratio"
+    )]
+    #[expect(
+        clippy::cast_sign_loss,
+        reason = "a piece count: the ceiling of a non-negative ratio"
+    )]
+    pub fn pieces(&self, max_piece_m: f64) -> impl Iterator<Item = Piece> + '_ {
+        let turn = self.turn_rad.abs();
+        let chord_count = if self.turn_radius_m > 0.0 && turn > 0.0 {
+            (turn / CHORD_ANGLE_RAD).ceil().max(1.0) as usize
+        } else {
+            0
+        };
+        let run_count = if self.straight_m > 0.0 {
+            if max_piece_m > 0.0 && self.straight_m > max_piece_m {
+                (self.straight_m / max_piece_m).ceil() as usize
+            } else {
+                1
+            }
+        } else {
+            0
+        };
+        let change_s = self.speed_change_s();
+        let change_count = if change_s > 0.0 {
+            (change_s / SPEED_PIECE_S).ceil() as usize
+        } else {
+            0
+        };
+        Pieces {
+            leg: self,
+            index: 0,
+            arc_m: self.arc_m(),
+            length_m: self.length_m(),
+            chords: (0, chord_count),
+            runs: (0, run_count),
+            changes: (0, change_count),
+            change_s,
+            change_m: self.speed_change_m(),
+            from_m: 0.0,
+            turn_end_m: self.turn_end_m(),
+            unit: angle::course_to_unit(self.course_rad),
+            last_to: None,
+        }
+    }
+}
 
 /// The pieces of a leg: the union of three grids of distances along it (the
 /// arc's chords, the straight run's pieces, the speed change's time steps),
@@ -33,11 +129,15 @@ pub(super) struct Pieces<'a> {
 impl Pieces<'_> {
     /// The next point of each grid beyond `from_m`, skipping points on or
     /// before it.
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "piece counts and indices are small, so exact in f64"
+    )]
     fn next_point(&mut self) -> Option<f64> {
         let (leg, arc_m, straight_m) = (self.leg, self.arc_m, self.leg.straight_m);
         let change_s = self.change_s;
         let from_m = self.from_m;
-        let (chords, runs, changes) = (self.chords.1, self.runs.1, self.changes.1);
+        let (chord_count, run_count, change_count) = (self.chords.1, self.runs.1, self.changes.1);
         let mut best = f64::INFINITY;
         let mut visit = |grid: &mut (usize, usize), point: &dyn Fn(usize) -> f64| {
             while grid.0 < grid.1 {
@@ -49,12 +149,12 @@ impl Pieces<'_> {
                 grid.0 += 1;
             }
         };
-        visit(&mut self.chords, &|k| arc_m * k as f64 / chords as f64);
+        visit(&mut self.chords, &|k| arc_m * k as f64 / chord_count as f64);
         visit(&mut self.runs, &|k| {
-            arc_m + straight_m * k as f64 / runs as f64
+            arc_m + straight_m * k as f64 / run_count as f64
         });
         visit(&mut self.changes, &|k| {
-            leg.distance_at(change_s * k as f64 / changes as f64)
+            leg.distance_at(change_s * k as f64 / change_count as f64)
         });
         (best.is_finite()).then(|| best.min(self.length_m))
     }
@@ -64,21 +164,25 @@ impl Pieces<'_> {
     /// The `index`-th piece of a leg sailed at one speed: chords of equal
     /// angle, then runs of equal length, in the form the planner has always
     /// cut legs (its recorded plans are reproduced bit for bit).
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "piece counts and indices are small, so exact in f64"
+    )]
     fn at_one_speed(&self, index: usize) -> Option<Piece> {
         let leg = self.leg;
-        let (chords, runs) = (self.chords.1, self.runs.1);
-        if index >= chords + runs {
+        let (chord_count, run_count) = (self.chords.1, self.runs.1);
+        if index >= chord_count + run_count {
             return None;
         }
         let turn = leg.turn_rad.abs();
         let turn_s = leg.turn_duration_s();
-        if index < chords {
-            let chord_s = turn_s / chords as f64;
-            let from = leg.on_arc(turn * index as f64 / chords as f64);
-            let to = leg.on_arc(turn * (index + 1) as f64 / chords as f64);
+        if index < chord_count {
+            let chord_s = turn_s / chord_count as f64;
+            let from = leg.on_arc(turn * index as f64 / chord_count as f64);
+            let to = leg.on_arc(turn * (index + 1) as f64 / chord_count as f64);
             let course_rad = angle::normalize_2pi(
                 leg.start_course_rad
-                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chords as f64,
+                    + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chord_count as f64,
             );
             return Some(Piece {
                 start_m: from,
@@ -90,11 +194,11 @@ impl Pieces<'_> {
                 changing_speed: false,
             });
         }
-        let run = index - chords;
-        let run_s = leg.straight_duration_s() / runs as f64;
+        let run = index - chord_count;
+        let run_s = leg.straight_duration_s() / run_count as f64;
         // Leg::velocity_mps is course_to_unit(course) * speed.
         let velocity = self.unit * leg.speed_mps;
-        let (start_m, duration_s) = if runs == 1 {
+        let (start_m, duration_s) = if run_count == 1 {
             (self.turn_end_m, leg.straight_duration_s())
         } else {
             (self.turn_end_m + velocity * (run_s * run as f64), run_s)
@@ -114,6 +218,10 @@ impl Pieces<'_> {
 impl Iterator for Pieces<'_> {
     type Item = Piece;
 
+    #[expect(
+        clippy::float_cmp,
+        reason = "the last end is reused only for the very same distance"
+    )]
     fn next(&mut self) -> Option<Piece> {
         if self.leg.speed_change.is_none() {
             let piece = self.at_one_speed(self.index);

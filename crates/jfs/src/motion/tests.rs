@@ -73,6 +73,7 @@ fn pieces_cover_the_leg_continuously() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn max_length_cuts_the_arc() {
     let model = RateLimitedTurn {
         turn_radius_m: 400.0,
@@ -165,6 +166,7 @@ fn remainder_of_a_speed_change_continues_the_same_motion() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn a_leg_that_stops_ends_at_its_stopping_distance_even_on_the_arc() {
     // From 6 m/s at 0.03 m/s²: 600 m to stop, inside the 628 m of the arc.
     let stop = Leg {
