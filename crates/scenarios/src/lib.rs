@@ -48,6 +48,7 @@ pub mod batch;
 pub mod convert;
 pub mod error;
 pub mod evaluation;
+pub mod fixtures;
 pub mod generator;
 pub mod geo;
 pub mod io;
