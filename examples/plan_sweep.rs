@@ -5,7 +5,7 @@
 //! planner's defaults (see `docs/architecture.md`).
 //!
 //! Run with `cargo run --release --example plan_sweep -- [FOLDER] [SEEDS]`;
-//! FOLDER defaults to `imazu` (under `fixtures/`), SEEDS to 10.
+//! FOLDER defaults to `imazu` (under `crates/scenarios/fixtures/`), SEEDS to 10.
 #![allow(clippy::print_stdout)]
 
 use std::process::ExitCode;

@@ -11,7 +11,6 @@
 //! plan (as `plan/tss` does, with seed 1); without it the seeds are 1, 2, 3,
 //! ... in turn.
 
-use std::path::Path;
 use std::process::ExitCode;
 use vorrt::planner::Planner;
 use vorrt::scenarios::Scenario;
@@ -31,7 +30,7 @@ fn main() -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/paper/tss.ron");
+    let path = vorrt::scenarios::bundled_fixtures_dir().join("paper/tss.ron");
     let scenario = match Scenario::load(&path) {
         Ok(scenario) => scenario,
         Err(error) => {

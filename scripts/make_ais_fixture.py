@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes fixtures/ais/encounter.nmea: a small AIS log of a three-vessel encounter
+"""Writes crates/ais/fixtures/encounter.nmea: a small AIS log of a three-vessel encounter
 in the English Channel, encoded with pyais (MIT; `pip install pyais`).
 
 Ownship (MMSI 235000001, class A, !AIVDO) steams east at 12 kn; a class A
@@ -13,7 +13,7 @@ static data (type 5 in two sentences, type 24 parts A and B), every line behind
 an NMEA 4.0 tag block (`\\s:...,c:UNIXTIME*hh\\`), a base station report (an
 unused type), a sentence with a wrong checksum and some lines that are not AIS.
 
-    python3 scripts/make_ais_fixture.py > fixtures/ais/encounter.nmea
+    python3 scripts/make_ais_fixture.py > crates/ais/fixtures/encounter.nmea
 """
 import math
 

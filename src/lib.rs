@@ -1,8 +1,7 @@
-//! # vorrt
-//!
-//! The facade of the vorrt workspace: re-exports its crates.
+#![doc = include_str!("../README.md")]
 #![forbid(missing_docs)]
 
+pub use glam;
 pub use vorrt_colregs as colregs;
 pub use vorrt_geometry as geometry;
 pub use vorrt_jfs as jfs;

@@ -1,6 +1,6 @@
 //! Golden outputs of the planner: for each paper fixture, a few Imazu cases
 //! and seeds 1 to 3, the plan's waypoints (position, time, course) must equal
-//! the ones recorded in `fixtures/golden/plans.ron` bit for bit, so that an
+//! the ones recorded in `tests/golden/plans.ron` bit for bit, so that an
 //! optimisation of the planner cannot change what it plans unnoticed.
 //!
 //! After a change that is meant to alter the plans, record them again with
@@ -10,9 +10,9 @@
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 use vorrt::planner::{Planner, PlannerConfig, PlannerError, Turning};
-use vorrt::scenarios::Scenario;
+use vorrt::scenarios::fixtures;
 
-/// The fixtures planned, as paths under `fixtures/`.
+/// The fixtures planned, as names for `vorrt::scenarios::fixtures::find`.
 const FIXTURES: [&str; 10] = [
     "paper/crossing",
     "paper/head_on",
@@ -73,12 +73,10 @@ impl GoldenWaypoint {
     }
 }
 
-fn workspace_path(relative: &str) -> PathBuf {
-    [env!("CARGO_MANIFEST_DIR"), relative].iter().collect()
-}
-
 fn golden_path() -> PathBuf {
-    workspace_path("fixtures/golden/plans.ron")
+    [env!("CARGO_MANIFEST_DIR"), "tests", "golden", "plans.ron"]
+        .iter()
+        .collect()
 }
 
 fn error_kind(error: &PlannerError) -> String {
@@ -96,9 +94,10 @@ fn error_kind(error: &PlannerError) -> String {
 fn compute() -> Vec<GoldenCase> {
     let mut cases = Vec::new();
     for fixture in FIXTURES {
-        let path = workspace_path(&format!("fixtures/{fixture}.ron"));
-        let scenario =
-            Scenario::load(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+        let scenario = fixtures::find(fixture)
+            .unwrap_or_else(|| panic!("{fixture}: not bundled"))
+            .load()
+            .unwrap_or_else(|error| panic!("{fixture}: {error}"));
         // The tree's own branch, with the paper's instantaneous turns: this is
         // the search the golden outputs were recorded from. The default,
         // rate-limited plans simplify this branch (`vorrt_planner::simplify`)
@@ -168,7 +167,7 @@ fn plans_match_the_recorded_golden_outputs() {
             cases,
         };
         let text = serialise(&file);
-        std::fs::create_dir_all(path.parent().expect("parent")).expect("create fixtures/golden");
+        std::fs::create_dir_all(path.parent().expect("parent")).expect("create tests/golden");
         std::fs::write(&path, text + "\n").expect("write golden plans");
         return;
     }

@@ -4,11 +4,10 @@
 #![allow(dead_code, unreachable_pub)]
 
 use glam::DVec2;
-use std::path::PathBuf;
 use vorrt::colregs::VesselState;
 use vorrt::jfs::TargetState;
 use vorrt::planner::{PlannerConfig, PlanningProblem};
-use vorrt::scenarios::Scenario;
+use vorrt::scenarios::{Scenario, fixtures};
 
 /// The seed every benchmarked plan uses.
 pub const SEED: u64 = 1;
@@ -16,17 +15,14 @@ pub const SEED: u64 = 1;
 /// The seed of the generated encounters.
 pub const GENERATOR_SEED: u64 = 0x5eed_0f7a_46e7;
 
-/// `fixtures/<dir>/<name>.ron` at the workspace root, loaded and validated.
+/// The bundled fixture `<dir>/<name>.ron` (`vorrt::scenarios::fixtures`),
+/// loaded and validated.
 pub fn fixture(dir: &str, name: &str) -> Scenario {
-    let path: PathBuf = [
-        env!("CARGO_MANIFEST_DIR"),
-        "fixtures",
-        dir,
-        &format!("{name}.ron"),
-    ]
-    .iter()
-    .collect();
-    Scenario::load(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()))
+    let fixture = fixtures::find(&format!("{dir}/{name}"))
+        .unwrap_or_else(|| panic!("no bundled fixture {dir}/{name}"));
+    fixture
+        .load()
+        .unwrap_or_else(|error| panic!("{}: {error}", fixture.source()))
 }
 
 /// A fixture's planning problem and planner configuration.

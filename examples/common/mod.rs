@@ -4,7 +4,7 @@
 use std::process::ExitCode;
 use vorrt::scenarios::{Scenario, bundled_fixtures_dir, evaluate, simulate};
 
-/// Runs the bundled fixture `relative` (under `fixtures/`) with its own seed
+/// Runs the bundled fixture `relative` (under `crates/scenarios/fixtures/`) with its own seed
 /// and prints the evaluation table. Exit code 0 when ownship reached its goal
 /// with the clearance kept, 1 otherwise, 2 for a fixture that does not load.
 pub(crate) fn run_fixture(relative: &str) -> ExitCode {

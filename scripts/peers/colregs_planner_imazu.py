@@ -5,7 +5,7 @@ Not a build dependency of vorrt: a measuring aid for docs/performance.md.
 Needs the peer in the running Python (`pip install colregs-planner`, tested
 with 0.1.3); everything else is the standard library.
 
-For each fixtures/imazu/imazu_NN.ron (read here: positions, courses, speeds,
+For each crates/scenarios/fixtures/imazu/imazu_NN.ron (read here: positions, courses, speeds,
 lengths, goals, d_th and the simulation section) ownship is driven by the
 peer's Kuwata velocity-obstacle policy (`VOPolicyKuwata`, built by the
 peer's own `make_vo_policy` with `policy_type="vo_kuwata"`), with COLREGs
@@ -287,7 +287,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("out_dir", type=Path, help="folder for <case>/trajectory.csv and summary.csv")
     parser.add_argument("--fixtures", type=Path,
-                        default=Path(__file__).resolve().parents[2] / "fixtures" / "imazu")
+                        default=Path(__file__).resolve().parents[2] / "crates" / "scenarios" / "fixtures" / "imazu")
     parser.add_argument("--repeats", type=int, default=1,
                         help="runs per case; the median wall time is reported (default 1)")
     parser.add_argument("--d-pass-m", type=float, default=None,

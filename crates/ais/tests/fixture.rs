@@ -1,10 +1,10 @@
-//! The bundled log `fixtures/ais/encounter.nmea` (made by
+//! The bundled log `fixtures/encounter.nmea` of this crate (made by
 //! `scripts/make_ais_fixture.py` with pyais) read and imported.
 
 use proptest::prelude::*;
 use vorrt_ais::{AisError, ImportOptions, build_scenario, estimate, read_log};
 
-const LOG: &str = include_str!("../../../fixtures/ais/encounter.nmea");
+const LOG: &str = include_str!("../fixtures/encounter.nmea");
 const OWN: u32 = 235_000_001;
 const HEAD_ON: u32 = 244_000_002;
 const CROSSING: u32 = 338_000_003;

@@ -3,7 +3,7 @@
 
 use crate::console;
 use crate::error::{CliError, ExitStatus};
-use crate::fixtures::BUNDLED;
+use crate::fixtures::{self, BUNDLED};
 use crate::report::Report;
 use crate::run::{folder_name, run_scenario, seed_for, write_outputs};
 use rayon::prelude::*;
@@ -82,7 +82,7 @@ fn collect_bundled() -> Result<Vec<Entry>, CliError> {
             Ok(Entry {
                 group: fixture.group.to_owned(),
                 stem: folder_name(fixture.stem()),
-                scenario: fixture.load()?,
+                scenario: fixtures::load(fixture)?,
             })
         })
         .collect()

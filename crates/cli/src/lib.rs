@@ -1,33 +1,4 @@
-//! # vorrt-cli
-//!
-//! The `vorrt` command line: run a scenario in closed loop and report on it
-//! (`simulate`), plan once from the start (`plan`), validate scenario files
-//! (`check`), run every bundled scenario into an HTML page (`demo`), run
-//! Monte Carlo campaigns (`batch`, `generate`, `merge`), and judge any
-//! planner's recorded tracks (`judge`).
-//!
-//! Its only public parts are [`main_entry`], the whole program, and
-//! [`report`], the stable `report.json` and `plan` output schemas (see
-//! `docs/report-format.md`). Inside, each module depends only on those
-//! above it in this list, so there is no import circle:
-//!
-//! | module | what it gives |
-//! |---|---|
-//! | `error` | `ExitStatus` and `CliError` |
-//! | `console` | the one writer of standard output and error |
-//! | `args` | the command line itself (clap), with its help texts |
-//! | `font`, `plot`, [`report`] | the bundled font, the plots and the report schema |
-//! | `fixtures` | the bundled scenarios, embedded in the binary |
-//! | `run` | one scenario's closed-loop run and its files |
-//! | `progress` | progress on stderr for long runs |
-//! | `export` | `trajectory.csv`, `trajectory.geojson`, `trajectory.gpx`; the plan as GeoJSON or GPX |
-//! | `demo`, `batch`, `import_ais` | `vorrt demo`; `vorrt batch`, `generate` and `merge`; `import-ais`: an AIS log into a geographic scenario |
-//! | `judge` | `vorrt judge`: recorded tracks judged by the project's evaluation |
-//! | `commands` | what each subcommand does |
-//!
-//! The workspace root package's `vorrt` binary (`cargo run --release -- demo`
-//! at the root; `cargo install --locked --path .`) and this crate's
-//! `vorrt-cli` binary (used by its tests) both just call [`main_entry`].
+#![doc = include_str!("../README.md")]
 #![forbid(missing_docs)]
 // All printing goes through `console`, which never panics on a failed write.
 #![deny(clippy::print_stdout, clippy::print_stderr)]
@@ -47,6 +18,11 @@ mod plot;
 mod progress;
 pub mod report;
 mod run;
+
+// The crates whose types `report`'s constructors take, so that this crate
+// alone is enough to build a report.
+pub use vorrt_planner as planner;
+pub use vorrt_scenarios as scenarios;
 
 use clap::Parser;
 use error::ExitStatus;

@@ -21,10 +21,9 @@ fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
 
+/// A bundled scenario file (vorrt-scenarios' `fixtures/`).
 fn fixture(relative: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../fixtures")
-        .join(relative)
+    vorrt_scenarios::bundled_fixtures_dir().join(relative)
 }
 
 fn crossing() -> PathBuf {

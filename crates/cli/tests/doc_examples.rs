@@ -22,7 +22,7 @@ fn workspace_root() -> PathBuf {
 }
 
 /// Runs the binary from the workspace root, so that scenario paths read as
-/// the doc writes them (`fixtures/paper/head_on.ron`).
+/// the doc writes them (`crates/scenarios/fixtures/paper/head_on.ron`).
 fn vorrt(args: &[&str]) -> Output {
     let output = Command::new(env!("CARGO_BIN_EXE_vorrt-cli"))
         .args(args)
@@ -232,7 +232,7 @@ fn report_json_fields_and_example_match_a_run() {
     let out = dir.path().join("head_on");
     vorrt(&[
         "simulate",
-        "fixtures/paper/head_on.ron",
+        "crates/scenarios/fixtures/paper/head_on.ron",
         "--out",
         out.to_str().unwrap(),
     ]);
@@ -263,7 +263,7 @@ fn geographic_trajectory_example_matches_a_run() {
     let out = dir.path().join("geo");
     vorrt(&[
         "simulate",
-        "fixtures/geo/channel_ais.ron",
+        "crates/scenarios/fixtures/geo/channel_ais.ron",
         "--out",
         out.to_str().unwrap(),
     ]);
@@ -285,7 +285,7 @@ fn geographic_trajectory_example_matches_a_run() {
 
 #[test]
 fn plan_output_fields_and_example_match_a_run() {
-    let output = vorrt(&["plan", "fixtures/paper/crossing.ron"]);
+    let output = vorrt(&["plan", "crates/scenarios/fixtures/paper/crossing.ron"]);
     let plan: Value = serde_json::from_slice(&output.stdout).expect("plan prints JSON");
     let doc = doc();
     let mut real = BTreeSet::new();

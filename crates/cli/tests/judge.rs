@@ -17,10 +17,15 @@ fn vorrt(args: &[&str]) -> Output {
         .expect("the vorrt binary runs")
 }
 
+/// A bundled file: `ais/...` from vorrt-ais' `fixtures/`, the scenarios
+/// (`paper/...`, `geo/...`) from vorrt-scenarios'.
 fn fixture(relative: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../fixtures")
-        .join(relative)
+    match relative.strip_prefix("ais/") {
+        Some(file) => Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../ais/fixtures")
+            .join(file),
+        None => vorrt_scenarios::bundled_fixtures_dir().join(relative),
+    }
 }
 
 fn text(path: &Path) -> &str {

@@ -1,34 +1,5 @@
-//! # vorrt-planner
-//!
-//! The VORRT-COLREGs planner of Dubey and Louis: a rapidly-exploring random
-//! tree whose every node holds the joint state of all vessels, grown by a joint
-//! forward simulation and pruned by velocity-obstacle, closest-point-of-approach
-//! and COLREGs checks. The paper's errata are applied as
-//! `docs/architecture.md` records.
-//!
-//! ## Catalogue
-//!
-//! | module | what it gives |
-//! |---|---|
-//! | [`config`] | [`PlannerConfig`]: `d'`, `d_th`, goal bias, node and sample budgets, turn bound, deadline; validated |
-//! | [`constraint`] | [`Constraint`]: the seam for land, no-go areas and lanes, kept by every check of ownship's motion and by the sampler; [`NoConstraint`] |
-//! | [`problem`] | [`PlanningProblem`]: ownship, goal, targets and the encounters in force |
-//! | [`vorrt`] | [`Planner`]: Algorithms 1-2, seeded, restartable, bounded |
-//! | [`safety`] | [`SafetyChecker`](safety::SafetyChecker): Algorithm 3 (VO, segment CPA, CPA ahead, COLREGs) |
-//! | [`validity`] | [`MotionValidator`]: the one validity check of a [`Leg`](vorrt_jfs::Leg), used by tree growth, simplification and a closed loop; [`EncounterState`] carried along a branch |
-//! | [`simplify`] | [`simplify`](simplify::simplify): a branch into the fewest sailable legs the same validator accepts; [`hold_then_alter`](simplify::hold_then_alter): the manoeuvres of two alterations (keep the course, then act; alter, then resume) |
-//! | [`sampler`] | [`Sampler`](sampler::Sampler): ChaCha8 goal-biased sampling |
-//! | [`evasion`] | [`evasive_course`]: the course that keeps farthest from every target, for when no safe path is found |
-//! | [`plan`] | [`Plan`], [`Waypoint`], [`PlanStatistics`], [`RejectionCause`] |
-//! | [`error`] | [`PlannerError`] |
+#![doc = include_str!("../README.md")]
 #![forbid(missing_docs)]
-
-// What the planner's signatures take and return, so that a user needs only
-// this crate in `[dependencies]`.
-pub use glam;
-pub use vorrt_colregs as colregs;
-pub use vorrt_geometry as geometry;
-pub use vorrt_jfs as jfs;
 
 pub mod config;
 pub mod constraint;
@@ -55,3 +26,15 @@ pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
 pub use validity::{EncounterState, MotionValidator, check_legs, check_legs_with};
 pub use vorrt::Planner;
+
+// What a planner user handles, so that this crate alone is enough: the
+// problem's vessels and encounters, the motion and prediction types of its
+// legs and targets, and the layers below as modules.
+pub use glam::{self, DVec2};
+pub use vorrt_colregs as colregs;
+pub use vorrt_colregs::{Encounter, EncounterLatch, Role, RuleParameters, VesselState};
+pub use vorrt_geometry as geometry;
+pub use vorrt_jfs as jfs;
+pub use vorrt_jfs::{
+    InstantTurn, Leg, LinearTrack, MotionModel, Pose, RateLimitedTurn, TargetState,
+};

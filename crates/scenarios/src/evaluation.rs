@@ -226,9 +226,8 @@ pub fn scoring_for(clearance_m: f64) -> ScoringParameters {
 /// rules the run was made with (`record.config`).
 ///
 /// ```
-/// use vorrt_scenarios::{Scenario, evaluate, simulate};
-/// let scenario = Scenario::load(std::path::Path::new(concat!(
-///     env!("CARGO_MANIFEST_DIR"), "/../../fixtures/paper/crossing.ron"))).unwrap();
+/// use vorrt_scenarios::{evaluate, fixtures, simulate};
+/// let scenario = fixtures::find("paper/crossing").unwrap().load().unwrap();
 /// let record = simulate(&scenario, 1).unwrap();
 /// let evaluation = evaluate(&scenario, &record);
 /// assert!(evaluation.reached_goal && evaluation.clearance_kept);

@@ -130,11 +130,12 @@ pub fn load_dir(dir: &Path) -> Result<Vec<(PathBuf, Scenario)>, ScenarioError> {
         .collect()
 }
 
-/// The bundled fixtures directory (`fixtures/` at the workspace root, holding
-/// `paper/` and `imazu/`), as found from this crate's source location.
+/// The bundled fixtures directory (this crate's `fixtures/`, holding
+/// `paper/`, `imazu/` and `geo/`), as found from this crate's source
+/// location; the same files are embedded in [`crate::fixtures`].
 #[must_use]
 pub fn bundled_fixtures_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures")
 }
 
 #[cfg(test)]

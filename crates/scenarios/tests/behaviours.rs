@@ -9,7 +9,7 @@ use vorrt_scenarios::{
 };
 
 fn fixture(relative: &str) -> Scenario {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "fixtures", relative]
+    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "fixtures", relative]
         .iter()
         .collect();
     Scenario::load(&path).expect("fixture loads")

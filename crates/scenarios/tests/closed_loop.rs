@@ -7,7 +7,7 @@ use vorrt_colregs::{Encounter, Role};
 use vorrt_scenarios::{PlanTrigger, Scenario, evaluate, simulate};
 
 fn fixture(relative: &str) -> Scenario {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "fixtures", relative]
+    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "fixtures", relative]
         .iter()
         .collect();
     Scenario::load(&path).expect("fixture loads")

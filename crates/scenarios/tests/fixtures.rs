@@ -1,7 +1,7 @@
 //! The bundled fixtures load, validate, round-trip, convert to SI, and are as
 //! demanding as their comments say.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use vorrt_geometry::{closest_point_of_approach_within, units};
 use vorrt_scenarios::{Behaviour, Scenario, VesselSpec, bundled_fixtures_dir, load_dir};
 
@@ -227,7 +227,7 @@ fn behaviours_and_metre_positions_convert() {
 
 #[test]
 fn docs_example_is_the_crossing_fixture() {
-    let doc_path = bundled_fixtures_dir().join("../docs/scenario-format.md");
+    let doc_path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/scenario-format.md");
     let doc = std::fs::read_to_string(&doc_path).expect("docs/scenario-format.md");
     let example = doc
         .split("## Complete example")

@@ -7,7 +7,7 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_scenarios::{Scenario, SimulationRecord, simulate};
 
 fn fixture(relative: &str) -> Scenario {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "fixtures", relative]
+    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "fixtures", relative]
         .iter()
         .collect();
     Scenario::load(&path).expect("fixture loads")
@@ -53,8 +53,6 @@ fn a_bad_rate_is_refused_naming_the_field() {
         let text = std::fs::read_to_string(
             [
                 env!("CARGO_MANIFEST_DIR"),
-                "..",
-                "..",
                 "fixtures",
                 "paper",
                 "head_on.ron",

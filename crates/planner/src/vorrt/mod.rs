@@ -40,10 +40,8 @@ const CLOCK_EVERY_SAMPLES: u64 = 32;
 /// again (as a closed loop does) reuses them.
 ///
 /// ```
-/// use vorrt_planner::{Planner, PlannerConfig, PlanningProblem};
-/// use vorrt_colregs::VesselState;
-/// use vorrt_jfs::TargetState;
-/// use glam::DVec2;
+/// use vorrt_planner::geometry::angle::signed_turn;
+/// use vorrt_planner::{DVec2, Planner, PlannerConfig, PlanningProblem, TargetState, VesselState};
 ///
 /// // Head-on: ownship north at 6 m/s, a target 4 km ahead heading south.
 /// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
@@ -57,8 +55,8 @@ const CLOCK_EVERY_SAMPLES: u64 = 32;
 /// assert_eq!(plan.waypoints.last().unwrap().position_m, DVec2::new(0.0, 6000.0));
 /// // Rule 14: the first course change is to starboard.
 /// let first_turn = plan.waypoints.iter().skip(1).map(|w| w.course_rad)
-///     .find(|course| vorrt_geometry::angle::signed_turn(0.0, *course).abs() > 1e-9).unwrap();
-/// assert!(vorrt_geometry::angle::signed_turn(0.0, first_turn) > 0.0);
+///     .find(|course| signed_turn(0.0, *course).abs() > 1e-9).unwrap();
+/// assert!(signed_turn(0.0, first_turn) > 0.0);
 /// ```
 ///
 /// A planner keeps a user [`Constraint`] too (land, a no-go area, a lane:

@@ -274,9 +274,8 @@ pub fn call_seed(seed: u64, call: usize) -> u64 {
 /// Runs `scenario` in closed loop with planner seed `seed`.
 ///
 /// ```
-/// use vorrt_scenarios::{Scenario, simulate};
-/// let scenario = Scenario::load(std::path::Path::new(concat!(
-///     env!("CARGO_MANIFEST_DIR"), "/../../fixtures/paper/head_on.ron"))).unwrap();
+/// use vorrt_scenarios::{fixtures, simulate};
+/// let scenario = fixtures::find("paper/head_on").unwrap().load().unwrap();
 /// let record = simulate(&scenario, 1).unwrap();
 /// assert!(record.reached_goal);
 /// ```
