@@ -1,7 +1,7 @@
 //! One row of results per scenario of a batch.
 
 use super::BatchItem;
-use crate::evaluation::Evaluation;
+use crate::evaluation::{Evaluation, succeeded};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 use vorrt_colregs::{ComplianceViolation, Role};
@@ -87,10 +87,13 @@ pub struct BatchRow {
 }
 
 impl BatchRow {
-    /// Whether the run counts as a success: goal reached, no collision, `d_th` kept.
+    /// Whether the run counts as a success: [`Evaluation::success`] of the
+    /// row's evaluation (goal reached, no collision, `d_th` kept); a run that
+    /// could not be made never does.
     #[must_use]
     pub fn success(&self) -> bool {
-        self.error.is_empty() && self.reached_goal && !self.collision && !self.clearance_violation
+        self.error.is_empty()
+            && succeeded(self.reached_goal, self.collision, !self.clearance_violation)
     }
 
     /// The compliance with `rule` (13-17), as in the row.
