@@ -51,6 +51,101 @@ fn encounters_at_calls(record: &SimulationRecord) -> Vec<Vec<Option<EncounterLat
     at_calls
 }
 
+/// The planner calls of every run, tallied.
+#[derive(Default)]
+struct Tally {
+    /// (calls, seconds, samples) per group: trigger, plan in force, outcome.
+    groups: BTreeMap<String, (usize, f64, u64)>,
+    /// (retries, fully compliant plans found) per (encounters changed since
+    /// the last failure, failures before, at most 8).
+    streaks: BTreeMap<(bool, usize), (usize, usize)>,
+    /// Fully compliant plans found by retries: (by the manoeuvre search, by a tree).
+    found_by: (usize, usize),
+}
+
+impl Tally {
+    /// Adds every planner call of one run.
+    fn add_run(&mut self, record: &SimulationRecord) {
+        let encounters = encounters_at_calls(record);
+        let mut compliant_before = true;
+        let mut failures = 0usize;
+        let mut last_failure: Option<&Vec<Option<EncounterLatch>>> = None;
+        for (event, now) in record.plans.iter().zip(&encounters) {
+            let retry = event.trigger == PlanTrigger::Retry;
+            let outcome = if event.succeeded {
+                format!("{:?}", event.compliance)
+            } else {
+                "no plan".to_owned()
+            };
+            let key = format!(
+                "{:<5} | {:<5} | {outcome}",
+                if retry { "retry" } else { "other" },
+                compliant_before
+            );
+            let group = self.groups.entry(key).or_default();
+            group.0 += 1;
+            group.1 += event.statistics.elapsed_s;
+            group.2 += event.samples_drawn;
+            let full = event.succeeded && event.compliance == Compliance::Full;
+            let changed = last_failure.is_some_and(|before| before != now);
+            if changed {
+                failures = 0;
+            }
+            if retry && full {
+                if event.statistics.nodes <= 1 {
+                    self.found_by.0 += 1;
+                } else {
+                    self.found_by.1 += 1;
+                }
+            }
+            if retry {
+                let streak = self.streaks.entry((changed, failures.min(8))).or_default();
+                streak.0 += 1;
+                streak.1 += usize::from(full);
+            }
+            if full {
+                failures = 0;
+                last_failure = None;
+            } else {
+                failures += 1;
+                last_failure = Some(now);
+            }
+            compliant_before = full;
+        }
+    }
+
+    /// Prints the groups, the searches that found retries' plans, and the
+    /// retries by streak, for `runs` runs.
+    fn print(&self, runs: usize) {
+        let total_s: f64 = self.groups.values().map(|group| group.1).sum();
+        let total_samples: u64 = self.groups.values().map(|group| group.2).sum();
+        println!(
+            "trigger | fully compliant plan before | outcome, calls, planning s (share), samples drawn (share)"
+        );
+        for (key, (calls, seconds, samples)) in &self.groups {
+            println!(
+                "{key:<30} {calls:>6} {seconds:>8.2} s ({:>4.1} %) {samples:>10} ({:>4.1} %)",
+                100.0 * seconds / total_s,
+                100.0 * *samples as f64 / total_samples as f64
+            );
+        }
+        println!("total {total_s:.2} s, {total_samples} samples, {runs} runs");
+        println!(
+            "fully compliant plans found by retries: {} by the manoeuvre search, {} by a tree",
+            self.found_by.0, self.found_by.1
+        );
+        println!(
+            "retries: encounters changed since the last failure | failures before (8 = 8 or more) | retries | fully compliant plans found"
+        );
+        for ((changed, failures), (retries, found)) in &self.streaks {
+            println!(
+                "{changed:<5} | {failures} | {retries:>5} | {found:>4} ({:.0} %)",
+                100.0 * *found as f64 / *retries as f64
+            );
+        }
+    }
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (Some(behaviour), Some(count)) = (
@@ -71,90 +166,12 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    // (calls, seconds, samples) per group; (retries, successes) per streak.
-    let mut groups: BTreeMap<String, (usize, f64, u64)> = BTreeMap::new();
-    let mut streaks: BTreeMap<(bool, usize), (usize, usize)> = BTreeMap::new();
-    // Fully compliant plans found by retries: (by the manoeuvre search, by a tree).
-    let mut found_by = (0usize, 0usize);
+    let mut tally = Tally::default();
     for item in &items {
-        let Ok(record) = simulate(&item.scenario, item.seed) else {
-            continue;
-        };
-        let encounters = encounters_at_calls(&record);
-        let mut compliant_before = true;
-        let mut failures = 0usize;
-        let mut last_failure: Option<&Vec<Option<EncounterLatch>>> = None;
-        for (event, now) in record.plans.iter().zip(&encounters) {
-            let retry = event.trigger == PlanTrigger::Retry;
-            let outcome = if event.succeeded {
-                format!("{:?}", event.compliance)
-            } else {
-                "no plan".to_owned()
-            };
-            let key = format!(
-                "{:<5} | {:<5} | {outcome}",
-                if retry { "retry" } else { "other" },
-                compliant_before
-            );
-            let group = groups.entry(key).or_default();
-            group.0 += 1;
-            group.1 += event.statistics.elapsed_s;
-            group.2 += event.samples_drawn;
-            let full = event.succeeded && event.compliance == Compliance::Full;
-            let changed = last_failure.is_some_and(|before| before != now);
-            if changed {
-                failures = 0;
-            }
-            if retry && full {
-                if event.statistics.nodes <= 1 {
-                    found_by.0 += 1;
-                } else {
-                    found_by.1 += 1;
-                }
-            }
-            if retry {
-                let streak = streaks.entry((changed, failures.min(8))).or_default();
-                streak.0 += 1;
-                streak.1 += usize::from(full);
-            }
-            if full {
-                failures = 0;
-                last_failure = None;
-            } else {
-                failures += 1;
-                last_failure = Some(now);
-            }
-            compliant_before = full;
+        if let Ok(record) = simulate(&item.scenario, item.seed) {
+            tally.add_run(&record);
         }
     }
-    let total_s: f64 = groups.values().map(|group| group.1).sum();
-    let total_samples: u64 = groups.values().map(|group| group.2).sum();
-    println!(
-        "trigger | fully compliant plan before | outcome, calls, planning s (share), samples drawn (share)"
-    );
-    for (key, (calls, seconds, samples)) in &groups {
-        println!(
-            "{key:<30} {calls:>6} {seconds:>8.2} s ({:>4.1} %) {samples:>10} ({:>4.1} %)",
-            100.0 * seconds / total_s,
-            100.0 * *samples as f64 / total_samples as f64
-        );
-    }
-    println!(
-        "total {total_s:.2} s, {total_samples} samples, {} runs",
-        items.len()
-    );
-    println!(
-        "fully compliant plans found by retries: {} by the manoeuvre search, {} by a tree",
-        found_by.0, found_by.1
-    );
-    println!(
-        "retries: encounters changed since the last failure | failures before (8 = 8 or more) | retries | fully compliant plans found"
-    );
-    for ((changed, failures), (retries, found)) in streaks {
-        println!(
-            "{changed:<5} | {failures} | {retries:>5} | {found:>4} ({:.0} %)",
-            100.0 * found as f64 / retries as f64
-        );
-    }
+    tally.print(items.len());
     ExitCode::SUCCESS
 }

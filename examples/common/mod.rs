@@ -4,9 +4,10 @@
 use std::process::ExitCode;
 use vorrt::scenarios::{Scenario, bundled_fixtures_dir, evaluate, simulate};
 
-/// Runs the bundled fixture `relative` (under `crates/scenarios/fixtures/`) with its own seed
-/// and prints the evaluation table. Exit code 0 when ownship reached its goal
-/// with the clearance kept, 1 otherwise, 2 for a fixture that does not load.
+/// Runs the bundled fixture `relative` (under `crates/scenarios/fixtures/`)
+/// with its own seed and prints the evaluation table. Exit code 0 when the
+/// run succeeded (`Evaluation::success`: goal reached, no collision, `d_th`
+/// kept), 1 otherwise, 2 for a fixture that does not load.
 pub(crate) fn run_fixture(relative: &str) -> ExitCode {
     let path = bundled_fixtures_dir().join(relative);
     let scenario = match Scenario::load(&path) {
@@ -31,7 +32,7 @@ pub(crate) fn run_fixture(relative: &str) -> ExitCode {
     }
     println!();
     print!("{}", evaluation.table());
-    if evaluation.reached_goal && evaluation.clearance_kept {
+    if evaluation.success() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

@@ -6,7 +6,6 @@
 
 use crate::error::CliError;
 use crate::report::Report;
-use crate::run::Run;
 use geojson::{Feature, FeatureCollection, Geometry, JsonObject, JsonValue};
 use std::path::Path;
 use time::OffsetDateTime;
@@ -146,9 +145,12 @@ fn geographic_frame(scenario: &Scenario) -> Result<LocalFrame, CliError> {
 ///
 /// # Errors
 /// [`CliError::BadInput`] for a scenario that is not geographic.
-pub(crate) fn trajectory_geojson(scenario: &Scenario, run: &Run) -> Result<String, CliError> {
+pub(crate) fn trajectory_geojson(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+    report: &Report,
+) -> Result<String, CliError> {
     let frame = geographic_frame(scenario)?;
-    let record = &run.record;
     let mut features = Vec::new();
     for (index, (spec, role, states)) in vessels(scenario, record).into_iter().enumerate() {
         let line =
@@ -160,7 +162,7 @@ pub(crate) fn trajectory_geojson(scenario: &Scenario, run: &Run) -> Result<Strin
             properties.insert("mmsi".into(), mmsi.into());
         }
         properties.insert("length_m".into(), spec.length_m.into());
-        if let Some(target) = index.checked_sub(1).and_then(|i| run.report.targets.get(i)) {
+        if let Some(target) = index.checked_sub(1).and_then(|i| report.targets.get(i)) {
             properties.insert("encounter".into(), target.encounter.clone().into());
             properties.insert("colregs_role".into(), target.role.clone().into());
         }
@@ -179,7 +181,7 @@ pub(crate) fn trajectory_geojson(scenario: &Scenario, run: &Run) -> Result<Strin
         properties.insert("coordTimes".into(), coord_times.into());
         features.push(feature(line, properties));
     }
-    features.extend(closest_approaches(scenario, record, &run.report, &frame));
+    features.extend(closest_approaches(scenario, record, report, &frame));
     let collection = FeatureCollection {
         bbox: None,
         features,
@@ -286,20 +288,25 @@ pub(crate) fn trajectory_gpx(
     gpx_text(&document)
 }
 
-/// Writes `trajectory.csv` of `run` into `dir`, and for a geographic scenario
+/// Writes `trajectory.csv` of the run recorded in `record` and reported in
+/// `report` into `dir`, and for a geographic scenario
 /// `trajectory.geojson` and `trajectory.gpx`; returns the names written.
 ///
 /// # Errors
 /// [`CliError::Output`] when a file cannot be written.
 pub(crate) fn write_trajectories(
     scenario: &Scenario,
-    run: &Run,
+    record: &SimulationRecord,
+    report: &Report,
     dir: &Path,
 ) -> Result<Vec<&'static str>, CliError> {
-    let mut files = vec![(TRAJECTORY_CSV, trajectory_csv(scenario, &run.record)?)];
+    let mut files = vec![(TRAJECTORY_CSV, trajectory_csv(scenario, record)?)];
     if scenario.is_geographic() {
-        files.push((TRAJECTORY_GEOJSON, trajectory_geojson(scenario, run)?));
-        files.push((TRAJECTORY_GPX, trajectory_gpx(scenario, &run.record)?));
+        files.push((
+            TRAJECTORY_GEOJSON,
+            trajectory_geojson(scenario, record, report)?,
+        ));
+        files.push((TRAJECTORY_GPX, trajectory_gpx(scenario, record)?));
     }
     let mut names = Vec::new();
     for (name, text) in files {

@@ -44,7 +44,7 @@ pub struct Report {
     /// Ownship's path quality as sailed.
     pub path_quality: PathQualityReport,
     /// `reached_goal && !collision && clearance_kept`: the run succeeded
-    /// (exit code 0 of `vorrt simulate`).
+    /// (`vorrt_scenarios::Evaluation::success`; exit code 0 of `vorrt simulate`).
     pub reached_goal_safely: bool,
     /// Planner calls during the run.
     pub planning: PlanningReport,
@@ -138,8 +138,6 @@ impl Report {
     /// The report of a run of `scenario` recorded in `record` and judged in `evaluation`.
     #[must_use]
     pub fn new(scenario: &Scenario, record: &SimulationRecord, evaluation: &Evaluation) -> Self {
-        let reached_goal_safely =
-            evaluation.reached_goal && !evaluation.collision && evaluation.clearance_kept;
         Self {
             format_version: FORMAT_VERSION,
             scenario: evaluation.scenario.clone(),
@@ -162,7 +160,7 @@ impl Report {
                 course_change_deg_per_nm: evaluation.course_change_deg_per_nm,
                 findings: evaluation.track_findings.clone(),
             },
-            reached_goal_safely,
+            reached_goal_safely: evaluation.success(),
             planning: PlanningReport {
                 plans_made: evaluation.plans_made,
                 replans: evaluation.replans,

@@ -71,7 +71,7 @@ pub(crate) fn write_outputs(scenario: &Scenario, run: &Run, dir: &Path) -> Resul
         CliError::Output(format!("cannot write {}: {error}", report_path.display()))
     })?;
     plot::write_plots(scenario, &run.record, &run.evaluation, dir).map_err(CliError::Output)?;
-    crate::export::write_trajectories(scenario, run, dir)?;
+    crate::export::write_trajectories(scenario, &run.record, &run.report, dir)?;
     Ok(())
 }
 

@@ -142,6 +142,28 @@ pub struct Evaluation {
 }
 
 impl Evaluation {
+    /// Whether the run **succeeded**: ownship reached its goal, no hull
+    /// touched another, and every target kept the clearance `d_th`.
+    /// COLREGs compliance is not part of it (see [`Self::safe_and_compliant`]).
+    ///
+    /// The one success criterion of a closed-loop run: `report.json`'s
+    /// `reached_goal_safely`, exit code 0 of `vorrt simulate` and `vorrt demo`,
+    /// a batch's `success_rate` ([`crate::BatchRow::success`]) and the examples'
+    /// exit codes all read it.
+    #[must_use]
+    pub fn success(&self) -> bool {
+        succeeded(self.reached_goal, self.collision, self.clearance_kept)
+    }
+
+    /// Whether the tracks were **safe and compliant**: no collision, `d_th`
+    /// kept from every target, and no finding under the observed evaluation
+    /// (`compliant`). Whether ownship reached a goal is not asked: recorded
+    /// tracks (`vorrt judge`) need not end at one. Exit code 0 of `vorrt judge`.
+    #[must_use]
+    pub fn safe_and_compliant(&self) -> bool {
+        !self.collision && self.clearance_kept && self.compliant
+    }
+
     /// The evaluation as a plain-text table: one row per target, then the run's
     /// totals. For examples and terminals; the command line writes JSON too.
     #[must_use]
@@ -209,6 +231,12 @@ impl Evaluation {
     }
 }
 
+/// [`Evaluation::success`] from its three parts, for results that keep them
+/// apart from an [`Evaluation`] (a batch row read back from `rows.csv`).
+pub(crate) fn succeeded(reached_goal: bool, collision: bool, clearance_kept: bool) -> bool {
+    reached_goal && !collision && clearance_kept
+}
+
 /// Scoring constants for a scenario: its own clearance as `d_th`, with the
 /// near-miss and collision ranges at the default proportions beneath it (1/2
 /// and 1/8: 100 m and 25 m for the open-sea 200 m).
@@ -230,7 +258,7 @@ pub fn scoring_for(clearance_m: f64) -> ScoringParameters {
 /// let scenario = fixtures::find("paper/crossing").unwrap().load().unwrap();
 /// let record = simulate(&scenario, 1).unwrap();
 /// let evaluation = evaluate(&scenario, &record);
-/// assert!(evaluation.reached_goal && evaluation.clearance_kept);
+/// assert!(evaluation.success());
 /// ```
 #[must_use]
 pub fn evaluate(scenario: &Scenario, record: &SimulationRecord) -> Evaluation {

@@ -1,6 +1,7 @@
 //! The `planner` section of a scenario file: [`PlannerConfig`] in file units.
 
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::RuleParameters;
 use vorrt_geometry::units;
 use vorrt_planner::{NearestIndex, PlannerConfig, PlannerError, Turning};
 
@@ -156,42 +157,44 @@ impl PlannerSettings {
     #[must_use]
     pub fn apply_to(&self, base: PlannerConfig) -> PlannerConfig {
         let mut config = base;
-        let set = |target: &mut f64, value: Option<f64>, to_si: fn(f64) -> f64| {
-            if let Some(value) = value {
-                *target = to_si(value);
-            }
-        };
+        self.apply_search_to(&mut config);
+        self.apply_rules_to(&mut config.rules);
+        config
+    }
+
+    /// Replaces the search and sailing settings of `config` that are set.
+    fn apply_search_to(&self, config: &mut PlannerConfig) {
         let same = |value: f64| value;
-        set(&mut config.clearance_m, self.clearance_m, same);
-        set(
+        set_si(&mut config.clearance_m, self.clearance_m, same);
+        set_si(
             &mut config.preferred_clearance_factor,
             self.preferred_clearance_factor,
             same,
         );
-        set(&mut config.step_m, self.step_m, same);
-        set(&mut config.goal_tolerance_m, self.goal_tolerance_m, same);
-        set(&mut config.goal_bias, self.goal_bias, same);
-        set(
+        set_si(&mut config.step_m, self.step_m, same);
+        set_si(&mut config.goal_tolerance_m, self.goal_tolerance_m, same);
+        set_si(&mut config.goal_bias, self.goal_bias, same);
+        set_si(
             &mut config.nodes_per_route_step,
             self.nodes_per_route_step,
             same,
         );
-        set(
+        set_si(
             &mut config.phase_two_goal_bias,
             self.phase_two_goal_bias,
             same,
         );
-        set(
+        set_si(
             &mut config.max_turn_per_step_rad,
             self.max_turn_per_step_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut config.sampling_margin_m,
             self.sampling_margin_nm,
             units::nautical_miles_to_m,
         );
-        set(&mut config.lookahead_s, self.lookahead_s, same);
+        set_si(&mut config.lookahead_s, self.lookahead_s, same);
         if let Some(budget) = self.time_budget_s {
             config.time_budget_s = Some(budget);
         }
@@ -210,54 +213,63 @@ impl PlannerSettings {
         if self.instant_turns == Some(true) {
             config.turning = Turning::Instant;
         }
-        let rules = &mut config.rules;
-        set(&mut rules.mtd_m, self.mtd_nm, units::nautical_miles_to_m);
-        set(
+    }
+
+    /// Replaces the rule constants of `rules` that are set.
+    fn apply_rules_to(&self, rules: &mut RuleParameters) {
+        set_si(&mut rules.mtd_m, self.mtd_nm, units::nautical_miles_to_m);
+        set_si(
             &mut rules.risk_cpa_m,
             self.risk_cpa_nm,
             units::nautical_miles_to_m,
         );
-        set(
+        set_si(
             &mut rules.head_on_half_width_rad,
             self.head_on_half_width_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut rules.abaft_beam_rad,
             self.abaft_beam_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut rules.passed_angle_rad,
             self.passed_angle_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut rules.turn_tolerance_rad,
             self.turn_tolerance_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut rules.stand_on_course_tolerance_rad,
             self.stand_on_course_tolerance_deg,
             f64::to_radians,
         );
-        set(
+        set_si(
             &mut rules.stand_on_speed_tolerance_mps,
             self.stand_on_speed_tolerance_kn,
             units::knots_to_mps,
         );
-        set(
+        set_si(
             &mut rules.stand_on_action_range_m,
             self.stand_on_action_range_nm,
             units::nautical_miles_to_m,
         );
-        set(
+        set_si(
             &mut rules.apparent_turn_rad,
             self.apparent_turn_deg,
             f64::to_radians,
         );
-        config
+    }
+}
+
+/// Sets `target` to `value` converted to SI by `to_si`, when `value` is set.
+fn set_si(target: &mut f64, value: Option<f64>, to_si: fn(f64) -> f64) {
+    if let Some(value) = value {
+        *target = to_si(value);
     }
 }
 

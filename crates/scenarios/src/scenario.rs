@@ -3,9 +3,13 @@
 //! Field names carry their units (`_nm`, `_m`, `_kn`, `_deg`, `_s`); positions
 //! are `(east, north)` tuples. See `docs/scenario-format.md` for the format.
 
-use crate::geo::ProjectedPositions;
+use crate::geo::{
+    LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions, check_lat_lon, parse_utc_time,
+};
 use crate::planner_settings::PlannerSettings;
 use serde::{Deserialize, Serialize};
+use time::OffsetDateTime;
+use vorrt_geometry::{DVec2, units};
 
 /// One encounter to plan or simulate: ownship, its goal, the targets, and
 /// optional planner, simulation and traffic-lane settings.
@@ -77,6 +81,128 @@ impl PartialEq for Scenario {
             && *seed == other.seed
             && *start_time == other.start_time
     }
+}
+
+impl Scenario {
+    /// Whether the scenario places its vessels in latitude and longitude
+    /// (ownship has a `start_lat_lon`).
+    #[must_use]
+    pub fn is_geographic(&self) -> bool {
+        self.ownship.start_lat_lon.is_some()
+    }
+
+    /// The local frame of a geographic scenario (about ownship's start), or
+    /// `None` for a local one.
+    #[must_use]
+    pub fn local_frame(&self) -> Option<LocalFrame> {
+        self.ownship
+            .start_lat_lon
+            .map(|(lat_deg, lon_deg)| LocalFrame::new(lat_deg, lon_deg))
+    }
+
+    /// The `start_time`, in UTC, if the scenario has a valid one.
+    #[must_use]
+    pub fn start_time_utc(&self) -> Option<OffsetDateTime> {
+        self.start_time
+            .as_deref()
+            .and_then(|text| parse_utc_time(text).ok())
+    }
+
+    /// Checks the geographic fields and projects every `*_lat_lon` into the
+    /// local frame ([`VesselSpec::projected`]); clears the projections of a
+    /// local scenario. Run by [`Scenario::validate`].
+    pub(crate) fn check_geographic(&mut self) -> Result<(), (String, String)> {
+        if let Some(text) = &self.start_time {
+            parse_utc_time(text).map_err(|problem| ("start_time".to_owned(), problem))?;
+        }
+        let frame = match self.ownship.start_lat_lon {
+            Some(origin) => {
+                check_lat_lon(origin)
+                    .map_err(|problem| ("ownship.start_lat_lon".to_owned(), problem))?;
+                Some(LocalFrame::new(origin.0, origin.1))
+            }
+            None => None,
+        };
+        if frame.is_some() && !self.lanes.is_empty() {
+            return Err((
+                "lanes".into(),
+                "are given in a geographic scenario: traffic lanes are only supported in local scenarios (start_nm/start_m)".into(),
+            ));
+        }
+        project_vessel(&mut self.ownship, "ownship".into(), frame.as_ref())?;
+        for (index, target) in self.targets.iter_mut().enumerate() {
+            let who = format!("targets[{index}] {:?}", target.name);
+            project_vessel(target, who, frame.as_ref())?;
+        }
+        Ok(())
+    }
+}
+
+/// Projects a vessel's `*_lat_lon` into `frame` ([`VesselSpec::projected`]),
+/// or checks that a local scenario's vessel has none.
+fn project_vessel(
+    vessel: &mut VesselSpec,
+    who: String,
+    frame: Option<&LocalFrame>,
+) -> Result<(), (String, String)> {
+    let field = |name: &str| format!("{who}.{name}");
+    let Some(frame) = frame else {
+        vessel.projected = ProjectedPositions::default();
+        for (name, value) in [
+            ("start_lat_lon", vessel.start_lat_lon),
+            ("goal_lat_lon", vessel.goal_lat_lon),
+        ] {
+            if value.is_some() {
+                return Err((
+                    field(name),
+                    "is given in a local scenario: a scenario is all geographic (ownship has start_lat_lon) or all local".into(),
+                ));
+            }
+        }
+        return Ok(());
+    };
+    let local_fields = [
+        ("start_nm", vessel.start_nm.is_some()),
+        ("start_m", vessel.start_m.is_some()),
+        ("goal_nm", vessel.goal_nm.is_some()),
+        ("goal_m", vessel.goal_m.is_some()),
+    ];
+    if let Some((name, _)) = local_fields.iter().find(|(_, given)| *given) {
+        return Err((
+            field(name),
+            "is given in a geographic scenario: a scenario is all geographic or all local; use start_lat_lon and goal_lat_lon".into(),
+        ));
+    }
+    let Some(start) = vessel.start_lat_lon else {
+        return Err((
+            field("start_lat_lon"),
+            "is missing: every vessel of a geographic scenario needs one".into(),
+        ));
+    };
+    let project = |name: &str, lat_lon: (f64, f64)| -> Result<DVec2, (String, String)> {
+        check_lat_lon(lat_lon).map_err(|problem| (field(name), problem))?;
+        let position_m = frame.to_local_m(lat_lon.0, lat_lon.1);
+        let distance_nm = position_m.length() / units::NAUTICAL_MILE_M;
+        if distance_nm.is_nan() || distance_nm > MAX_GEO_EXTENT_NM {
+            return Err((
+                field(name),
+                format!(
+                    "is {distance_nm:.1} nm from the origin (ownship's start), more than the {MAX_GEO_EXTENT_NM} nm a geographic scenario may span"
+                ),
+            ));
+        }
+        Ok(position_m)
+    };
+    let start_m = project("start_lat_lon", start)?;
+    let goal_m = vessel
+        .goal_lat_lon
+        .map(|goal| project("goal_lat_lon", goal))
+        .transpose()?;
+    vessel.projected = ProjectedPositions {
+        start_m: Some(start_m),
+        goal_m,
+    };
+    Ok(())
 }
 
 /// One vessel as a scenario file gives it (written `Vessel(...)` in RON).

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 use vorrt_colregs::{Encounter, Role};
-use vorrt_scenarios::{PlanTrigger, Scenario, evaluate, simulate};
+use vorrt_scenarios::{Evaluation, PlanTrigger, Scenario, evaluate, simulate};
 
 fn fixture(relative: &str) -> Scenario {
     let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "fixtures", relative]
@@ -43,6 +43,34 @@ fn paper_two_vessel_scenarios_reach_the_goal_safely_and_compliantly() {
         }
         assert!(evaluation.path_overhead_pct >= 0.0 && evaluation.path_overhead_pct < 50.0);
     }
+}
+
+#[test]
+fn success_needs_the_goal_and_safety_and_safe_and_compliant_needs_no_goal() {
+    let scenario = fixture("paper/crossing.ron");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    let run = evaluate(&scenario, &record);
+    assert!(run.success() && run.safe_and_compliant(), "{}", run.table());
+    let short = Evaluation {
+        reached_goal: false,
+        ..run.clone()
+    };
+    assert!(!short.success() && short.safe_and_compliant());
+    let touched = Evaluation {
+        collision: true,
+        ..run.clone()
+    };
+    assert!(!touched.success() && !touched.safe_and_compliant());
+    let close = Evaluation {
+        clearance_kept: false,
+        ..run.clone()
+    };
+    assert!(!close.success() && !close.safe_and_compliant());
+    let violated = Evaluation {
+        compliant: false,
+        ..run
+    };
+    assert!(violated.success() && !violated.safe_and_compliant());
 }
 
 #[test]

@@ -9,6 +9,7 @@ use crate::judge::tracks::{Place, Track, Tracks};
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::VesselState;
 use vorrt_geometry::{DVec2, angle, units};
+use vorrt_planner::PlannerConfig;
 use vorrt_scenarios::{
     LocalFrame, PlannerSettings, Scenario, SimulationRecord, SimulationSettings, VesselSpec,
 };
@@ -290,12 +291,19 @@ fn spec_from(name: &str, sampled: &Sampled, length_m: f64) -> VesselSpec {
     spec
 }
 
+/// The judged vessels, ownship first: their tracks, their fixes resampled on
+/// the common clock, and their lengths in metres.
+struct Judged<'a> {
+    tracks: Vec<&'a Track>,
+    sampled: Vec<Sampled>,
+    lengths_m: Vec<f64>,
+}
+
 /// Turns `tracks` into a run judged against `scenario` (or a synthesized one).
 ///
 /// # Errors
 /// [`CliError::BadInput`] when ownship cannot be found, has too few fixes,
 /// the tracks do not overlap, or a setting is invalid.
-#[allow(clippy::too_many_lines)]
 pub(crate) fn rebuild(
     mut tracks: Tracks,
     scenario: Option<Scenario>,
@@ -304,28 +312,7 @@ pub(crate) fn rebuild(
     let file = options.tracks_file.clone();
     let mut assumptions = Vec::new();
     let mut left_out = Vec::new();
-    let mut start_time = None;
-    if tracks.absolute_times {
-        let base = tracks
-            .tracks
-            .iter()
-            .flat_map(|track| &track.fixes)
-            .map(|fix| fix.time_s)
-            .fold(f64::INFINITY, f64::min);
-        if base.is_finite() {
-            for fix in tracks.tracks.iter_mut().flat_map(|track| &mut track.fixes) {
-                fix.time_s -= base;
-            }
-            start_time = time::OffsetDateTime::from_unix_timestamp_nanos(
-                #[allow(clippy::cast_possible_truncation)]
-                {
-                    (base * 1e9).round() as i128
-                },
-            )
-            .ok()
-            .map(vorrt_scenarios::geo::format_utc_time);
-        }
-    }
+    let start_time = to_relative_times(&mut tracks);
     let list = &tracks.tracks;
     let own = ownship_index(list, options, scenario.as_ref(), &mut assumptions)?;
     let frame = frame_for(list, own, scenario.as_ref(), options)?;
@@ -354,22 +341,99 @@ pub(crate) fn rebuild(
         .iter()
         .flat_map(|vessel| resample::gaps(vessel, &clock, options.max_gap_s))
         .collect();
+    let judged_tracks: Vec<&Track> = std::iter::once(&list[own])
+        .chain(targets.iter().map(|(index, _)| &list[*index]))
+        .collect();
     let sampled: Vec<Sampled> = vessels
         .iter()
         .map(|vessel| resample::sample(vessel, &clock))
         .collect();
-    // Lengths: the scenario's, else the tracks', else the default.
-    let track_indices: Vec<usize> = std::iter::once(own)
-        .chain(targets.iter().map(|(index, _)| *index))
-        .collect();
+    let (inputs, lengths_m) = vessel_inputs(
+        &judged_tracks,
+        &vessels,
+        &sampled,
+        scenario.as_ref(),
+        options,
+        &mut assumptions,
+    );
+    let judged = Judged {
+        tracks: judged_tracks,
+        sampled,
+        lengths_m,
+    };
+    let scenario_file = scenario.as_ref().map(|scenario| scenario.source.clone());
+    let mut scenario = match scenario {
+        Some(scenario) => with_judged_targets(scenario, &judged, &mut left_out),
+        None => synthesized_scenario(&file, &judged, &clock, start_time.clone(), &mut assumptions)?,
+    };
+    let (config, max_turn_rate_rad_s) = judging_config(&mut scenario, options, &mut assumptions)?;
+    let record = recorded_run(
+        &scenario,
+        &clock,
+        &judged,
+        config,
+        max_turn_rate_rad_s,
+        options.goal_tolerance_m,
+    );
+    let input = Input {
+        tracks_file: file,
+        tracks_format: tracks.format.to_owned(),
+        scenario_file,
+        ownship: list[own].name.clone(),
+        start_time,
+        clock,
+        max_gap_s: options.max_gap_s,
+        gaps,
+        goal_tolerance_m: options.goal_tolerance_m,
+        vessels: inputs,
+        left_out,
+        assumptions,
+        notes: tracks.notes,
+    };
+    Ok(Rebuilt {
+        scenario,
+        record,
+        input,
+    })
+}
+
+/// Shifts absolute fix times (Unix seconds) so that the earliest fix is at
+/// second 0; returns that instant as ISO 8601 UTC (`None` for relative times).
+fn to_relative_times(tracks: &mut Tracks) -> Option<String> {
+    if !tracks.absolute_times {
+        return None;
+    }
+    let base = tracks
+        .tracks
+        .iter()
+        .flat_map(|track| &track.fixes)
+        .map(|fix| fix.time_s)
+        .fold(f64::INFINITY, f64::min);
+    if !base.is_finite() {
+        return None;
+    }
+    for fix in tracks.tracks.iter_mut().flat_map(|track| &mut track.fixes) {
+        fix.time_s -= base;
+    }
+    time::OffsetDateTime::from_unix_timestamp_nanos((base * 1e9).round() as i128)
+        .ok()
+        .map(vorrt_scenarios::geo::format_utc_time)
+}
+
+/// Every judged vessel as the input described it, with its length in metres:
+/// the scenario's, else the tracks', else the default (an assumption, stated).
+fn vessel_inputs(
+    tracks: &[&Track],
+    vessels: &[&Prepared],
+    sampled: &[Sampled],
+    scenario: Option<&Scenario>,
+    options: &Options,
+    assumptions: &mut Vec<String>,
+) -> (Vec<VesselInput>, Vec<f64>) {
     let mut inputs = Vec::new();
-    let mut lengths = Vec::new();
-    for (position, (&index, vessel)) in track_indices.iter().zip(&vessels).enumerate() {
-        let track = &list[index];
-        let (length_m, from) = match (
-            spec_of(scenario.as_ref(), track, position == 0),
-            track.length_m,
-        ) {
+    let mut lengths_m = Vec::new();
+    for (position, (track, vessel)) in tracks.iter().zip(vessels).enumerate() {
+        let (length_m, from) = match (spec_of(scenario, track, position == 0), track.length_m) {
             (Some(spec), _) => (spec.length_m, "scenario"),
             (None, Some(length_m)) => (length_m, "tracks"),
             (None, None) => (options.default_length_m, "default"),
@@ -394,92 +458,132 @@ pub(crate) fn rebuild(
             courses_from: how(sampled[position].courses_recorded),
             speeds_from: how(sampled[position].speeds_recorded),
         });
-        lengths.push(length_m);
+        lengths_m.push(length_m);
     }
-    let scenario_file = scenario.as_ref().map(|scenario| scenario.source.clone());
-    let mut scenario = match scenario {
-        Some(mut scenario) => {
-            let given = scenario.clone();
-            let specs: Vec<VesselSpec> = track_indices
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(position, &index)| {
-                    let track = &list[index];
-                    spec_of(Some(&given), track, false).unwrap_or_else(|| {
-                        left_out.push(format!(
-                            "{:?}: in the tracks but not in the scenario; judged, starting where its track starts",
-                            track.name
-                        ));
-                        spec_from(&track.name, &sampled[position], lengths[position])
-                    })
-                })
-                .collect();
-            for spec in &scenario.targets {
-                if !specs.iter().any(|kept| kept.name == spec.name) {
-                    left_out.push(format!(
-                        "{:?}: in the scenario but not judged (no track of it, or too short)",
-                        spec.name
-                    ));
-                }
-            }
-            scenario.targets = specs;
-            scenario
-        }
-        None => {
-            let own_sampled = &sampled[0];
-            let mut ownship = spec_from(&list[own].name, own_sampled, lengths[0]);
-            let goal = own_sampled
-                .positions_m
-                .last()
-                .copied()
-                .unwrap_or(DVec2::ZERO);
-            ownship.goal_m = Some((goal.x, goal.y));
-            if ownship.speed_kn <= 0.0 {
-                let duration_s = clock.to_s - clock.from_s;
-                let length_m: f64 = own_sampled
-                    .positions_m
-                    .windows(2)
-                    .map(|pair| pair[0].distance(pair[1]))
-                    .sum();
-                ownship.speed_kn = units::mps_to_knots(length_m / duration_s);
-            }
-            if !(ownship.speed_kn.is_finite() && ownship.speed_kn > 0.0) {
-                return Err(bad(format!(
-                    "{file}: ownship {:?} does not move in the judged interval",
-                    ownship.name
-                )));
-            }
-            assumptions.push(format!(
-                "no --scenario: ownship's goal is the last position of its track ({:.0} m E, {:.0} m N); its start, course and speed are those of its first sample",
-                goal.x, goal.y
+    (inputs, lengths_m)
+}
+
+/// The given scenario with the judged targets in track order: each its
+/// scenario spec, or one from its track when the scenario lacks it. Both
+/// kinds of mismatch are listed in `left_out`.
+fn with_judged_targets(
+    mut scenario: Scenario,
+    judged: &Judged<'_>,
+    left_out: &mut Vec<String>,
+) -> Scenario {
+    let specs: Vec<VesselSpec> = judged
+        .tracks
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(position, track)| {
+            spec_of(Some(&scenario), track, false).unwrap_or_else(|| {
+                left_out.push(format!(
+                    "{:?}: in the tracks but not in the scenario; judged, starting where its track starts",
+                    track.name
+                ));
+                spec_from(
+                    &track.name,
+                    &judged.sampled[position],
+                    judged.lengths_m[position],
+                )
+            })
+        })
+        .collect();
+    for spec in &scenario.targets {
+        if !specs.iter().any(|kept| kept.name == spec.name) {
+            left_out.push(format!(
+                "{:?}: in the scenario but not judged (no track of it, or too short)",
+                spec.name
             ));
-            let targets = track_indices
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(position, &index)| {
-                    spec_from(&list[index].name, &sampled[position], lengths[position])
-                })
-                .collect();
-            let name = std::path::Path::new(&file).file_stem().map_or_else(
-                || "tracks".to_owned(),
-                |stem| stem.to_string_lossy().into_owned(),
-            );
-            Scenario {
-                name,
-                description: Some(format!("synthesized by vorrt judge from {file}")),
-                ownship,
-                targets,
-                planner: PlannerSettings::default(),
-                simulation: SimulationSettings::default(),
-                lanes: Vec::new(),
-                seed: None,
-                start_time: start_time.clone(),
-                source: format!("{file} (scenario synthesized by vorrt judge)"),
-            }
         }
-    };
+    }
+    scenario.targets = specs;
+    scenario
+}
+
+/// A scenario synthesized from the tracks of `file`: every vessel starts as
+/// its first sample, and ownship's goal is the last position of its track.
+///
+/// # Errors
+/// [`CliError::BadInput`] when ownship does not move in the judged interval.
+fn synthesized_scenario(
+    file: &str,
+    judged: &Judged<'_>,
+    clock: &Clock,
+    start_time: Option<String>,
+    assumptions: &mut Vec<String>,
+) -> Result<Scenario, CliError> {
+    let own_sampled = &judged.sampled[0];
+    let mut ownship = spec_from(&judged.tracks[0].name, own_sampled, judged.lengths_m[0]);
+    let goal = own_sampled
+        .positions_m
+        .last()
+        .copied()
+        .unwrap_or(DVec2::ZERO);
+    ownship.goal_m = Some((goal.x, goal.y));
+    if ownship.speed_kn <= 0.0 {
+        // Stopped at the first sample: its mean speed over the interval.
+        let duration_s = clock.to_s - clock.from_s;
+        let length_m: f64 = own_sampled
+            .positions_m
+            .windows(2)
+            .map(|pair| pair[0].distance(pair[1]))
+            .sum();
+        ownship.speed_kn = units::mps_to_knots(length_m / duration_s);
+    }
+    if !(ownship.speed_kn.is_finite() && ownship.speed_kn > 0.0) {
+        return Err(bad(format!(
+            "{file}: ownship {:?} does not move in the judged interval",
+            ownship.name
+        )));
+    }
+    assumptions.push(format!(
+        "no --scenario: ownship's goal is the last position of its track ({:.0} m E, {:.0} m N); its start, course and speed are those of its first sample",
+        goal.x, goal.y
+    ));
+    let targets = judged
+        .tracks
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(position, track)| {
+            spec_from(
+                &track.name,
+                &judged.sampled[position],
+                judged.lengths_m[position],
+            )
+        })
+        .collect();
+    let name = std::path::Path::new(file).file_stem().map_or_else(
+        || "tracks".to_owned(),
+        |stem| stem.to_string_lossy().into_owned(),
+    );
+    Ok(Scenario {
+        name,
+        description: Some(format!("synthesized by vorrt judge from {file}")),
+        ownship,
+        targets,
+        planner: PlannerSettings::default(),
+        simulation: SimulationSettings::default(),
+        lanes: Vec::new(),
+        seed: None,
+        start_time,
+        source: format!("{file} (scenario synthesized by vorrt judge)"),
+    })
+}
+
+/// The planner configuration the tracks are judged with (`--d-th` applied to
+/// `scenario` first) and ownship's rate-of-turn limit, radians per second
+/// (`--max-turn-rate`, else the planner's for ownship's length and speed).
+///
+/// # Errors
+/// [`CliError::BadInput`] when the scenario's planner settings are invalid.
+fn judging_config(
+    scenario: &mut Scenario,
+    options: &Options,
+    assumptions: &mut Vec<String>,
+) -> Result<(PlannerConfig, Option<f64>), CliError> {
     if let Some(d_th_m) = options.d_th_m {
         scenario.planner.clearance_m = Some(d_th_m);
     }
@@ -498,43 +602,59 @@ pub(crate) fn rebuild(
             .turning
             .max_turn_rate_rad_s(scenario.ownship.length_m, scenario.ownship.speed_mps()),
     };
-    let states = |sampled: &Sampled, length_m: f64| -> Vec<VesselState> {
-        sampled
-            .positions_m
-            .iter()
-            .zip(&sampled.courses_rad)
-            .zip(&sampled.speeds_mps)
-            .map(|((position, course), speed)| {
-                VesselState::new(*position, *course, *speed, length_m)
-            })
-            .collect()
-    };
+    Ok((config, max_turn_rate_rad_s))
+}
+
+/// A vessel's resampled track as states on the clock.
+fn vessel_states(sampled: &Sampled, length_m: f64) -> Vec<VesselState> {
+    sampled
+        .positions_m
+        .iter()
+        .zip(&sampled.courses_rad)
+        .zip(&sampled.speeds_mps)
+        .map(|((position, course), speed)| VesselState::new(*position, *course, *speed, length_m))
+        .collect()
+}
+
+/// The judged tracks as a run with no planner calls. Ownship reached its goal
+/// at the first sample of its nearest approach to it, if that came within
+/// `goal_tolerance_m`.
+fn recorded_run(
+    scenario: &Scenario,
+    clock: &Clock,
+    judged: &Judged<'_>,
+    config: PlannerConfig,
+    max_turn_rate_rad_s: Option<f64>,
+    goal_tolerance_m: f64,
+) -> SimulationRecord {
     let goal_m = scenario.ownship_goal_m();
     let nearest = clock
         .times_s
         .iter()
-        .zip(&sampled[0].positions_m)
+        .zip(&judged.sampled[0].positions_m)
         .map(|(time_s, position)| (position.distance(goal_m), *time_s))
         .min_by(|a, b| a.0.total_cmp(&b.0));
     let arrival_time_s = nearest
-        .filter(|(distance_m, _)| *distance_m <= options.goal_tolerance_m)
+        .filter(|(distance_m, _)| *distance_m <= goal_tolerance_m)
         .map(|(_, time_s)| time_s);
-    let record = SimulationRecord {
+    SimulationRecord {
         scenario: scenario.name.clone(),
         seed: 0,
         time_step_s: clock.step_s,
         times_s: clock.times_s.clone(),
-        ownship: states(&sampled[0], lengths[0]),
-        target_names: inputs
+        ownship: vessel_states(&judged.sampled[0], judged.lengths_m[0]),
+        target_names: judged
+            .tracks
             .iter()
             .skip(1)
-            .map(|input| input.name.clone())
+            .map(|track| track.name.clone())
             .collect(),
-        targets: sampled
+        targets: judged
+            .sampled
             .iter()
-            .zip(&lengths)
+            .zip(&judged.lengths_m)
             .skip(1)
-            .map(|(sampled, length_m)| states(sampled, *length_m))
+            .map(|(sampled, length_m)| vessel_states(sampled, *length_m))
             .collect(),
         plans: Vec::new(),
         plans_kept: Vec::new(),
@@ -542,25 +662,5 @@ pub(crate) fn rebuild(
         max_turn_rate_rad_s,
         reached_goal: arrival_time_s.is_some(),
         arrival_time_s,
-    };
-    let input = Input {
-        tracks_file: file,
-        tracks_format: tracks.format.to_owned(),
-        scenario_file,
-        ownship: list[own].name.clone(),
-        start_time,
-        clock,
-        max_gap_s: options.max_gap_s,
-        gaps,
-        goal_tolerance_m: options.goal_tolerance_m,
-        vessels: inputs,
-        left_out,
-        assumptions,
-        notes: tracks.notes,
-    };
-    Ok(Rebuilt {
-        scenario,
-        record,
-        input,
-    })
+    }
 }

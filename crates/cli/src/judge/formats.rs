@@ -71,6 +71,74 @@ fn label(index: usize, name: &str) -> String {
     format!("feature {index} ({name:?})")
 }
 
+/// The features of a GeoJSON text: those of a FeatureCollection, or the one Feature.
+fn geojson_features(file: &str, text: &str) -> Result<Vec<Feature>, CliError> {
+    let geojson: GeoJson = text
+        .parse()
+        .map_err(|error| bad(file, format!("not GeoJSON: {error}")))?;
+    match geojson {
+        GeoJson::FeatureCollection(collection) => Ok(collection.features),
+        GeoJson::Feature(feature) => Ok(vec![feature]),
+        GeoJson::Geometry(_) => Err(bad(
+            file,
+            "a bare geometry has no times: expected Features with a `times_s` or `coordTimes` property",
+        )),
+    }
+}
+
+/// A feature's `length_m` property, metres (`None` when absent or null).
+fn feature_length_m(
+    file: &str,
+    label: &str,
+    properties: &JsonObject,
+) -> Result<Option<f64>, CliError> {
+    match properties.get("length_m") {
+        None | Some(JsonValue::Null) => Ok(None),
+        Some(value) => value
+            .as_f64()
+            .filter(|length_m| length_m.is_finite() && *length_m > 0.0)
+            .map(Some)
+            .ok_or_else(|| {
+                bad(
+                    file,
+                    format!("{label}, property `length_m`: {value} is not a length in metres greater than 0"),
+                )
+            }),
+    }
+}
+
+/// A feature's points (`[longitude, latitude]`, checked) with their times, as fixes.
+fn lat_lon_fixes(
+    file: &str,
+    label: &str,
+    points: &[&geojson::Position],
+    times: Vec<f64>,
+) -> Result<Vec<Fix>, CliError> {
+    let mut fixes = Vec::with_capacity(points.len());
+    for (point_index, (point, time_s)) in points.iter().zip(times).enumerate() {
+        let (Some(lon_deg), Some(lat_deg)) = (point.as_slice().first(), point.as_slice().get(1))
+        else {
+            return Err(bad(
+                file,
+                format!("{label}, coordinates[{point_index}] has fewer than 2 numbers"),
+            ));
+        };
+        vorrt_scenarios::geo::check_lat_lon((*lat_deg, *lon_deg)).map_err(|problem| {
+            bad(
+                file,
+                format!("{label}, coordinates[{point_index}] [longitude, latitude] {problem}"),
+            )
+        })?;
+        fixes.push(Fix {
+            time_s,
+            place: Place::LatLon(*lat_deg, *lon_deg),
+            course_deg: None,
+            speed_kn: None,
+        });
+    }
+    Ok(fixes)
+}
+
 /// Reads GeoJSON: a FeatureCollection (or one Feature) of LineStrings or
 /// MultiLineStrings, one per vessel, with per-point times (see
 /// [`feature_times`]); `name` (else `vessel`, else `feature N`), optional
@@ -81,19 +149,7 @@ fn label(index: usize, name: &str) -> String {
 /// # Errors
 /// [`CliError::BadInput`] naming the file, the feature and the property.
 pub(crate) fn read_geojson(file: &str, text: &str) -> Result<Tracks, CliError> {
-    let geojson: GeoJson = text
-        .parse()
-        .map_err(|error| bad(file, format!("not GeoJSON: {error}")))?;
-    let features: Vec<Feature> = match geojson {
-        GeoJson::FeatureCollection(collection) => collection.features,
-        GeoJson::Feature(feature) => vec![feature],
-        GeoJson::Geometry(_) => {
-            return Err(bad(
-                file,
-                "a bare geometry has no times: expected Features with a `times_s` or `coordTimes` property",
-            ));
-        }
-    };
+    let features = geojson_features(file, text)?;
     let mut collector = Collector::default();
     let mut absolute_times = None;
     let mut notes = Vec::new();
@@ -126,20 +182,7 @@ pub(crate) fn read_geojson(file: &str, text: &str) -> Result<Tracks, CliError> {
                 format!("{label}: ISO 8601 times in some features and seconds in others"),
             ));
         }
-        let length_m = match properties.get("length_m") {
-            None | Some(JsonValue::Null) => None,
-            Some(value) => Some(
-                value
-                    .as_f64()
-                    .filter(|length_m| length_m.is_finite() && *length_m > 0.0)
-                    .ok_or_else(|| {
-                        bad(
-                            file,
-                            format!("{label}, property `length_m`: {value} is not a length in metres greater than 0"),
-                        )
-                    })?,
-            ),
-        };
+        let length_m = feature_length_m(file, &label, properties)?;
         let mmsi = properties
             .get("mmsi")
             .and_then(JsonValue::as_u64)
@@ -154,28 +197,9 @@ pub(crate) fn read_geojson(file: &str, text: &str) -> Result<Tracks, CliError> {
         track.length_m = track.length_m.or(length_m);
         track.mmsi = track.mmsi.or(mmsi);
         track.marked_ownship |= marked_ownship;
-        for (point_index, (point, time_s)) in points.iter().zip(times).enumerate() {
-            let (Some(lon_deg), Some(lat_deg)) =
-                (point.as_slice().first(), point.as_slice().get(1))
-            else {
-                return Err(bad(
-                    file,
-                    format!("{label}, coordinates[{point_index}] has fewer than 2 numbers"),
-                ));
-            };
-            vorrt_scenarios::geo::check_lat_lon((*lat_deg, *lon_deg)).map_err(|problem| {
-                bad(
-                    file,
-                    format!("{label}, coordinates[{point_index}] [longitude, latitude] {problem}"),
-                )
-            })?;
-            track.fixes.push(Fix {
-                time_s,
-                place: Place::LatLon(*lat_deg, *lon_deg),
-                course_deg: None,
-                speed_kn: None,
-            });
-        }
+        track
+            .fixes
+            .extend(lat_lon_fixes(file, &label, &points, times)?);
     }
     let tracks = collector.into_tracks();
     if tracks.is_empty() {

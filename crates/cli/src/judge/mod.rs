@@ -155,7 +155,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
     let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
     // No planner ran (an empty sum of times is -0).
     report.planning.total_planning_time_s = 0.0;
-    let judgement = output::Judgement::new(report, rebuilt.input);
+    let judgement = output::Judgement::new(&evaluation, report, rebuilt.input);
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out")
             .join("judge")

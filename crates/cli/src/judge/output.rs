@@ -4,6 +4,7 @@
 use crate::judge::build::Input;
 use crate::report::Report;
 use serde::{Deserialize, Serialize};
+use vorrt_scenarios::Evaluation;
 
 /// `judgement.json`: every field of `report.json` (the planner fields are
 /// zero: no planner ran), `safe_and_compliant`, and how the tracks were read.
@@ -12,19 +13,20 @@ pub(crate) struct Judgement {
     /// The judgement in the report's schema (`docs/report-format.md`).
     #[serde(flatten)]
     pub(crate) report: Report,
-    /// No collision, d_th kept and no COLREGs finding: exit code 0.
+    /// No collision, d_th kept and no COLREGs finding
+    /// (`vorrt_scenarios::Evaluation::safe_and_compliant`): exit code 0.
     pub(crate) safe_and_compliant: bool,
     /// How the tracks were read, resampled and completed.
     pub(crate) input: Input,
 }
 
 impl Judgement {
-    /// The judgement of `report`, read as `input` says.
-    pub(crate) fn new(report: Report, input: Input) -> Self {
-        let safe_and_compliant = !report.collision && report.clearance_kept && report.compliant;
+    /// The judgement `evaluation` reports as `report`, the tracks read as
+    /// `input` says.
+    pub(crate) fn new(evaluation: &Evaluation, report: Report, input: Input) -> Self {
         Self {
             report,
-            safe_and_compliant,
+            safe_and_compliant: evaluation.safe_and_compliant(),
             input,
         }
     }

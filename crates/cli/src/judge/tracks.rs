@@ -140,6 +140,57 @@ impl Columns {
         }
         Ok(columns)
     }
+
+    /// A row's time, seconds, and whether it is absolute (Unix seconds from
+    /// an ISO 8601 `time`) rather than `time_s`.
+    fn time_s(
+        &self,
+        file: &str,
+        line: u64,
+        record: &csv::StringRecord,
+    ) -> Result<(f64, bool), CliError> {
+        match (self.time_s, self.time) {
+            (Some(column), _) => Ok((required(file, line, record, column, "time_s")?, false)),
+            (None, Some(column)) => {
+                let text = record.get(column).unwrap_or("").trim();
+                let time = vorrt_scenarios::geo::parse_utc_time(text)
+                    .map_err(|problem| bad(file, format!("line {line}, field `time` {problem}")))?;
+                Ok((unix_seconds(time), true))
+            }
+            (None, None) => unreachable_columns(file),
+        }
+    }
+
+    /// A row's position: local metres when the file has them, else a
+    /// checked latitude and longitude.
+    fn place(&self, file: &str, line: u64, record: &csv::StringRecord) -> Result<Place, CliError> {
+        let local = self
+            .east
+            .map(|(east, north)| {
+                Ok::<_, CliError>(DVec2::new(
+                    required(file, line, record, east, "east_m")?,
+                    required(file, line, record, north, "north_m")?,
+                ))
+            })
+            .transpose()?;
+        Ok(match (local, self.lat_lon) {
+            (Some(position), _) => Place::Local(position),
+            (None, Some((lat, lon))) => {
+                let lat_lon = (
+                    required(file, line, record, lat, "lat_deg")?,
+                    required(file, line, record, lon, "lon_deg")?,
+                );
+                vorrt_scenarios::geo::check_lat_lon(lat_lon).map_err(|problem| {
+                    bad(
+                        file,
+                        format!("line {line}, fields `lat_deg,lon_deg` {problem}"),
+                    )
+                })?;
+                Place::LatLon(lat_lon.0, lat_lon.1)
+            }
+            (None, None) => unreachable_columns(file)?,
+        })
+    }
 }
 
 /// One field of a CSV row as a finite number; `Ok(None)` when empty.
@@ -175,6 +226,20 @@ fn required(
         .ok_or_else(|| bad(file, format!("line {line}, field `{name}` is empty")))
 }
 
+/// An optional number: `Ok(None)` when the column is absent or the field empty.
+fn optional(
+    file: &str,
+    line: u64,
+    record: &csv::StringRecord,
+    column: Option<usize>,
+    name: &str,
+) -> Result<Option<f64>, CliError> {
+    column
+        .map(|column| number(file, line, record, column, name))
+        .transpose()
+        .map(Option::flatten)
+}
+
 /// Reads a tracks CSV: the `trajectory.csv` that `vorrt simulate` writes
 /// (`time_s,vessel,east_m,north_m,course_deg,speed_kn[,lat_deg,lon_deg]`),
 /// or any CSV with a header naming `vessel`, a time (`time_s` seconds or
@@ -205,53 +270,11 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
         if vessel.is_empty() {
             return Err(bad(file, format!("line {line}, field `vessel` is empty")));
         }
-        let time_s = match (columns.time_s, columns.time) {
-            (Some(column), _) => required(file, line, &record, column, "time_s")?,
-            (None, Some(column)) => {
-                absolute_times = true;
-                let text = record.get(column).unwrap_or("").trim();
-                let time = vorrt_scenarios::geo::parse_utc_time(text)
-                    .map_err(|problem| bad(file, format!("line {line}, field `time` {problem}")))?;
-                unix_seconds(time)
-            }
-            (None, None) => unreachable_columns(file)?,
-        };
-        let local = columns
-            .east
-            .map(|(east, north)| {
-                Ok::<_, CliError>(DVec2::new(
-                    required(file, line, &record, east, "east_m")?,
-                    required(file, line, &record, north, "north_m")?,
-                ))
-            })
-            .transpose()?;
-        let place = match (local, columns.lat_lon) {
-            (Some(position), _) => Place::Local(position),
-            (None, Some((lat, lon))) => {
-                let lat_lon = (
-                    required(file, line, &record, lat, "lat_deg")?,
-                    required(file, line, &record, lon, "lon_deg")?,
-                );
-                vorrt_scenarios::geo::check_lat_lon(lat_lon).map_err(|problem| {
-                    bad(
-                        file,
-                        format!("line {line}, fields `lat_deg,lon_deg` {problem}"),
-                    )
-                })?;
-                Place::LatLon(lat_lon.0, lat_lon.1)
-            }
-            (None, None) => unreachable_columns(file)?,
-        };
-        let course_deg = columns
-            .course
-            .map(|column| number(file, line, &record, column, "course_deg"))
-            .transpose()?
-            .flatten();
-        let speed_kn = columns
-            .speed
-            .map(|column| number(file, line, &record, column, "speed_kn"))
-            .transpose()?
-            .flatten();
+        let (time_s, absolute) = columns.time_s(file, line, &record)?;
+        absolute_times |= absolute;
+        let place = columns.place(file, line, &record)?;
+        let course_deg = optional(file, line, &record, columns.course, "course_deg")?;
+        let speed_kn = optional(file, line, &record, columns.speed, "speed_kn")?;
         if let Some(speed_kn) = speed_kn
             && speed_kn < 0.0
         {
@@ -260,11 +283,7 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
                 format!("line {line}, field `speed_kn` is {speed_kn}, expected at least 0"),
             ));
         }
-        let length_m = columns
-            .length
-            .map(|column| number(file, line, &record, column, "length_m"))
-            .transpose()?
-            .flatten();
+        let length_m = optional(file, line, &record, columns.length, "length_m")?;
         if let Some(length_m) = length_m
             && length_m <= 0.0
         {

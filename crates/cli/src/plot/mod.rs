@@ -22,6 +22,14 @@ mod trajectories;
 use distance::draw_distance;
 use trajectories::draw_trajectories;
 
+/// A chart of both plots, on `f64` axes (east and north in nautical miles;
+/// minutes and metres).
+type Chart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
 /// Size of every plot, pixels.
 pub(crate) const SIZE: (u32, u32) = (1000, 800);
 

@@ -2,6 +2,8 @@
 
 use super::*;
 
+/// Draws the trajectories plot of `data` on `root`: the chart on the left,
+/// the legend on the right.
 pub(super) fn draw_trajectories<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     data: &PlotData<'_>,
@@ -48,9 +50,33 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .draw()
         .map_err(to_text)?;
 
-    // Traffic lanes.
+    draw_lanes(&mut chart, data, &view)?;
+    draw_clearance_circles(&mut chart, data)?;
+    // Targets first, ownship on top.
+    for track in vessels.iter().rev() {
+        let width = if track.evaluation.is_none() { 3 } else { 2 };
+        chart
+            .draw_series(LineSeries::new(
+                track.points_nm.iter().copied(),
+                track.colour.stroke_width(width),
+            ))
+            .map_err(to_text)?;
+    }
+    let interval_min = marker_interval_min(data.duration_s());
+    draw_course_markers(&mut chart, data, &vessels, interval_min)?;
+    draw_starts_and_goals(&mut chart, &vessels, &view)?;
+    draw_closest_approaches(&mut chart, data)?;
+    draw_legend(&right, data, interval_min)
+}
+
+/// Traffic lanes, clipped to the view, each labelled with its name and traffic direction.
+fn draw_lanes<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    data: &PlotData<'_>,
+    view: &View,
+) -> Result<(), String> {
     for lane in &data.lanes {
-        let clipped = clip_polygon(&lane.corners_nm, &view);
+        let clipped = clip_polygon(&lane.corners_nm, view);
         if clipped.len() < 3 {
             continue;
         }
@@ -85,8 +111,14 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
             ))
             .map_err(to_text)?;
     }
+    Ok(())
+}
 
-    // The d_th circle around ownship at each closest approach.
+/// The d_th circle around ownship at each target's closest approach.
+fn draw_clearance_circles<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    data: &PlotData<'_>,
+) -> Result<(), String> {
     let d_th_nm = data.d_th_m / METRES_PER_NM;
     for target in &data.targets {
         let Some(evaluation) = target.evaluation else {
@@ -109,24 +141,21 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
             )))
             .map_err(to_text)?;
     }
+    Ok(())
+}
 
-    // Tracks: targets first, ownship on top.
-    for track in vessels.iter().rev() {
-        let width = if track.evaluation.is_none() { 3 } else { 2 };
-        chart
-            .draw_series(LineSeries::new(
-                track.points_nm.iter().copied(),
-                track.colour.stroke_width(width),
-            ))
-            .map_err(to_text)?;
-    }
-
-    // Course triangles every few minutes.
-    let interval_min = marker_interval_min(data.duration_s());
+/// Course triangles on every track every `interval_min` minutes, ownship's
+/// labelled with the time.
+fn draw_course_markers<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    data: &PlotData<'_>,
+    vessels: &[&Track<'_>],
+    interval_min: f64,
+) -> Result<(), String> {
     let mut marker_time_s = interval_min * 60.0;
     while marker_time_s < data.duration_s() {
         let step = data.step_at(marker_time_s);
-        for track in &vessels {
+        for track in vessels {
             let (Some(&point), Some(&course)) =
                 (track.points_nm.get(step), track.courses_rad.get(step))
             else {
@@ -155,9 +184,16 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         }
         marker_time_s += interval_min * 60.0;
     }
+    Ok(())
+}
 
-    // Start dots and goal crosses.
-    for track in &vessels {
+/// Start dots with the vessels' names, and goal crosses within the view.
+fn draw_starts_and_goals<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    vessels: &[&Track<'_>],
+    view: &View,
+) -> Result<(), String> {
+    for track in vessels {
         let colour = track.colour;
         if let Some(&start) = track.points_nm.first() {
             chart
@@ -194,8 +230,15 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
             }
         }
     }
+    Ok(())
+}
 
-    // Closest approaches: the two positions joined, the distance written.
+/// Closest approaches: the two positions joined, the distance written
+/// (for the targets [`labelled`] picks).
+fn draw_closest_approaches<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    data: &PlotData<'_>,
+) -> Result<(), String> {
     let labels = labelled(&data.targets);
     for (target, label) in data.targets.iter().zip(labels) {
         let Some(evaluation) = target.evaluation else {
@@ -242,10 +285,11 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
             ))
             .map_err(to_text)?;
     }
-
-    draw_legend(&right, data, interval_min)
+    Ok(())
 }
 
+/// The legend: every vessel with its encounter and closest approach, then
+/// the key to the symbols at the bottom.
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     data: &PlotData<'_>,
@@ -253,7 +297,7 @@ fn draw_legend<DB: DrawingBackend>(
 ) -> Result<(), String> {
     let black = RGBColor(0, 0, 0);
     let grey = RGBColor(90, 90, 90);
-    let (width, height) = area.dim_in_pixel();
+    let (_, height) = area.dim_in_pixel();
     let bottom = i32::try_from(height).unwrap_or(i32::MAX) - 150;
     let x = 8;
     let mut y = 60;
@@ -316,7 +360,19 @@ fn draw_legend<DB: DrawingBackend>(
         }
         y += line_height;
     }
-    // Key to the symbols, at the bottom.
+    draw_symbol_key(area, data, (x, bottom), interval_min)
+}
+
+/// The key to the chart's symbols, from `(x, bottom)` down: start, course
+/// marker, goal, closest approach, d_th, and traffic lanes when there are any.
+fn draw_symbol_key<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    data: &PlotData<'_>,
+    (x, bottom): (i32, i32),
+    interval_min: f64,
+) -> Result<(), String> {
+    let black = RGBColor(0, 0, 0);
+    let grey = RGBColor(90, 90, 90);
     let mut y = bottom + 10;
     let step = 22;
     let symbol_x = x + 14;
@@ -376,6 +432,5 @@ fn draw_legend<DB: DrawingBackend>(
         ))
         .map_err(to_text)?;
     }
-    let _ = width;
     Ok(())
 }

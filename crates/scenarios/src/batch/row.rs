@@ -1,7 +1,7 @@
 //! One row of results per scenario of a batch.
 
 use super::BatchItem;
-use crate::evaluation::Evaluation;
+use crate::evaluation::{Evaluation, TargetEvaluation, succeeded};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 use vorrt_colregs::{ComplianceViolation, Role};
@@ -87,10 +87,13 @@ pub struct BatchRow {
 }
 
 impl BatchRow {
-    /// Whether the run counts as a success: goal reached, no collision, `d_th` kept.
+    /// Whether the run counts as a success: [`Evaluation::success`] of the
+    /// row's evaluation (goal reached, no collision, `d_th` kept); a run that
+    /// could not be made never does.
     #[must_use]
     pub fn success(&self) -> bool {
-        self.error.is_empty() && self.reached_goal && !self.collision && !self.clearance_violation
+        self.error.is_empty()
+            && succeeded(self.reached_goal, self.collision, !self.clearance_violation)
     }
 
     /// The compliance with `rule` (13-17), as in the row.
@@ -147,53 +150,13 @@ impl BatchRow {
     /// The row of an evaluated run.
     #[must_use]
     pub fn from_evaluation(item: &BatchItem, evaluation: &Evaluation) -> Self {
-        let rule = |rule: u8| -> Option<bool> {
-            let scores: Vec<f64> = evaluation
-                .targets
-                .iter()
-                .filter_map(|target| target.assessment.as_ref())
-                .filter_map(|assessment| {
-                    assessment
-                        .scores
-                        .applicable()
-                        .into_iter()
-                        .find(|(number, _)| *number == rule)
-                        .map(|(_, score)| score)
-                })
-                .collect();
-            (!scores.is_empty()).then(|| scores.iter().all(|score| *score >= 1.0))
-        };
+        let rule = |rule: u8| rule_compliance(evaluation, rule);
         let closest = evaluation
             .targets
             .iter()
             .min_by(|a, b| a.min_distance_m.total_cmp(&b.min_distance_m));
-        let mut findings = BTreeSet::new();
-        for target in &evaluation.targets {
-            match &target.assessment {
-                Some(assessment) => {
-                    findings.extend(assessment.violations.iter().map(|v| v.name()));
-                }
-                None if !target.clearance_kept => {
-                    findings.insert("clearance_violated");
-                }
-                None => {}
-            }
-        }
         let plans = evaluation.plans_made + evaluation.failed_plans;
-        let give_way: Vec<_> = evaluation
-            .targets
-            .iter()
-            .filter(|target| {
-                // Give-way encounters in which rule 16 was judged (not those
-                // whose closest approach came too soon after risk arose).
-                target.role == Role::GiveWay
-                    && target.risk_time_s.is_some()
-                    && target
-                        .assessment
-                        .as_ref()
-                        .is_some_and(|assessment| assessment.scores.rule_16.is_some())
-            })
-            .collect();
+        let give_way = judged_give_way(evaluation);
         let planning_time_ms = 1000.0 * evaluation.planning_time_s;
         Self {
             index: item.index,
@@ -225,36 +188,90 @@ impl BatchRow {
             closest_encounter: closest
                 .map(|t| t.encounter.name().to_owned())
                 .unwrap_or_default(),
-            violations: findings.into_iter().collect::<Vec<_>>().join(";"),
+            violations: finding_names(evaluation),
             error: String::new(),
             max_turn_rate_deg_s: evaluation.max_turn_rate_deg_s,
             turn_reversals: evaluation.turn_reversals,
             course_change_deg_per_nm: evaluation.course_change_deg_per_nm,
             give_way_encounters: give_way.len(),
-            give_way_apparent: give_way
-                .iter()
-                .filter(|target| {
-                    !target.findings.iter().any(|finding| {
-                        matches!(
-                            finding,
-                            ComplianceViolation::ActionNotApparent { .. }
-                                | ComplianceViolation::NoAction
-                        )
-                    })
-                })
-                .count(),
-            give_way_early: give_way
-                .iter()
-                .filter(|target| {
-                    !target.findings.iter().any(|finding| {
-                        matches!(
-                            finding,
-                            ComplianceViolation::LateAction { .. } | ComplianceViolation::NoAction
-                        )
-                    })
-                })
-                .count(),
+            give_way_apparent: count_without(&give_way, |finding| {
+                matches!(
+                    finding,
+                    ComplianceViolation::ActionNotApparent { .. } | ComplianceViolation::NoAction
+                )
+            }),
+            give_way_early: count_without(&give_way, |finding| {
+                matches!(
+                    finding,
+                    ComplianceViolation::LateAction { .. } | ComplianceViolation::NoAction
+                )
+            }),
             rule_departures: evaluation.rule_departures,
         }
     }
+}
+
+/// Compliance with `rule` over the run: `None` when it applied to no
+/// encounter, else whether every encounter it applied to scored full marks.
+fn rule_compliance(evaluation: &Evaluation, rule: u8) -> Option<bool> {
+    let scores: Vec<f64> = evaluation
+        .targets
+        .iter()
+        .filter_map(|target| target.assessment.as_ref())
+        .filter_map(|assessment| {
+            assessment
+                .scores
+                .applicable()
+                .into_iter()
+                .find(|(number, _)| *number == rule)
+                .map(|(_, score)| score)
+        })
+        .collect();
+    (!scores.is_empty()).then(|| scores.iter().all(|score| *score >= 1.0))
+}
+
+/// Every distinct finding over all targets, sorted, `;`-separated; a target
+/// with no encounter contributes only a broken clearance.
+fn finding_names(evaluation: &Evaluation) -> String {
+    let mut findings = BTreeSet::new();
+    for target in &evaluation.targets {
+        match &target.assessment {
+            Some(assessment) => {
+                findings.extend(assessment.violations.iter().map(|v| v.name()));
+            }
+            None if !target.clearance_kept => {
+                findings.insert("clearance_violated");
+            }
+            None => {}
+        }
+    }
+    findings.into_iter().collect::<Vec<_>>().join(";")
+}
+
+/// The give-way encounters in which rule 16 was judged (not those whose
+/// closest approach came too soon after risk arose).
+fn judged_give_way(evaluation: &Evaluation) -> Vec<&TargetEvaluation> {
+    evaluation
+        .targets
+        .iter()
+        .filter(|target| {
+            target.role == Role::GiveWay
+                && target.risk_time_s.is_some()
+                && target
+                    .assessment
+                    .as_ref()
+                    .is_some_and(|assessment| assessment.scores.rule_16.is_some())
+        })
+        .collect()
+}
+
+/// How many of `targets` have no finding for which `is_failure` holds.
+fn count_without(
+    targets: &[&TargetEvaluation],
+    is_failure: impl Fn(&ComplianceViolation) -> bool,
+) -> usize {
+    targets
+        .iter()
+        .filter(|target| !target.findings.iter().any(&is_failure))
+        .count()
 }
