@@ -52,11 +52,9 @@ impl EncounterState {
     }
 
     /// Advances every encounter to ownship's state `own_then`, at `elapsed_s`
-    /// after the tracks' time zero (`time_s` on the clock): latches are
-    /// updated from the new geometry (a new one judged on `steady_course_rad`,
-    /// the course held before any recent turn: [`update_latch_steady`]), and
-    /// the alteration made grows to `own_then`'s course
-    /// ([`alteration_made`]).
+    /// after the tracks' time zero (`time_s` on the clock), with each target
+    /// where its track puts it then: [`advance_to`](Self::advance_to) for
+    /// the planner's predicted tracks.
     pub fn advance(
         &mut self,
         own_then: &VesselState,
@@ -66,34 +64,57 @@ impl EncounterState {
         time_s: f64,
         rules: &RuleParameters,
     ) {
+        self.advance_to(
+            own_then,
+            steady_course_rad,
+            tracks.iter().map(|track| track.state_at(elapsed_s)),
+            time_s,
+            rules,
+        );
+    }
+
+    /// Advances every encounter to ownship's state `own_then` at `time_s`,
+    /// with the targets' states then, in target order (a branch's predicted
+    /// tracks, or a closed loop's true present states): latches are updated
+    /// from the new geometry (a new one judged on `steady_course_rad`, the
+    /// course held before any recent turn: [`update_latch_steady`]), and the
+    /// alteration made grows to `own_then`'s course ([`alteration_made`]).
+    /// The one operation the planner's branches and a closed loop share, so
+    /// they carry the encounters alike.
+    pub fn advance_to<I>(
+        &mut self,
+        own_then: &VesselState,
+        steady_course_rad: f64,
+        targets_then: I,
+        time_s: f64,
+        rules: &RuleParameters,
+    ) where
+        I: IntoIterator<Item = VesselState>,
+        I::IntoIter: Clone,
+    {
+        let targets_then = targets_then.into_iter();
         // Whether ownship was acting for some vessel up to now (giving way,
         // or free to act within the action range): a stand-on encounter
         // then carries the course it was free to take.
         let acting_for_others = acting_for_any(
             self.latches
                 .iter()
-                .zip(tracks)
-                .filter_map(|(latch, track)| {
-                    let range_m = own_then.position_m.distance(track.position_at(elapsed_s));
+                .zip(targets_then.clone())
+                .filter_map(|(latch, target)| {
+                    let range_m = own_then.position_m.distance(target.position_m);
                     latch.as_ref().map(|latch| (latch, range_m))
                 }),
             rules,
         );
-        for ((latch, altered), track) in self
+        for ((latch, altered), target) in self
             .latches
             .iter_mut()
             .zip(self.alterations.iter_mut())
-            .zip(tracks)
+            .zip(targets_then)
         {
             let before = *latch;
-            *latch = update_latch_steady(
-                before,
-                own_then,
-                steady_course_rad,
-                &track.state_at(elapsed_s),
-                time_s,
-                rules,
-            );
+            *latch =
+                update_latch_steady(before, own_then, steady_course_rad, &target, time_s, rules);
             *altered = alteration_made(
                 before,
                 *latch,
