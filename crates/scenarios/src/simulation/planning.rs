@@ -83,6 +83,18 @@ pub(super) struct PlanCall {
     pub(super) speed_change_mps2: f64,
 }
 
+/// What the searches of one planner call spent, over every level of the
+/// graded fallback tried.
+struct Attempts {
+    /// The error of the first search that failed, if any did.
+    first_error: Option<vorrt_planner::PlannerError>,
+    /// The failed searches' statistics (the first one's, with the time of
+    /// all).
+    spent: PlanStatistics,
+    /// Random samples drawn by every search.
+    samples_drawn: u64,
+}
+
 /// Calls the planners on `problem`, from all the rules down the graded
 /// fallback, and puts what comes of it in force: the first plan found, or on
 /// failure the previous plan if the planner's validity check still accepts
@@ -104,9 +116,60 @@ pub(super) fn plan_now(
 ) {
     let time_s = problem.start_time_s;
     let started = Instant::now();
-    let mut first_error = None;
-    let mut spent = PlanStatistics::default();
-    let mut samples_drawn = 0u64;
+    let (found, mut attempts) = search(planners, problem, &call);
+    let Some((plan, compliance)) = found else {
+        retry.failed(time_s, &problem.encounters);
+        if attempts.spent.elapsed_s == 0.0 {
+            attempts.spent.elapsed_s = started.elapsed().as_secs_f64();
+        }
+        fall_back(planners, problem, model, &call, active, plans, attempts);
+        return;
+    };
+    if compliance == Compliance::Full {
+        retry.succeeded();
+    } else {
+        // A fallback plan is sailed until a compliant one exists.
+        retry.failed(time_s, &problem.encounters);
+    }
+    let mut statistics = plan.statistics;
+    statistics.elapsed_s += attempts.spent.elapsed_s;
+    plans.push(PlanEvent {
+        time_s,
+        trigger: call.why,
+        seed: call.seed,
+        succeeded: true,
+        error: attempts.first_error.map(|error| error.to_string()),
+        statistics,
+        waypoints: plan.waypoints.clone(),
+        evasive_course_deg: None,
+        evasive_speed_mps: None,
+        compliance,
+        samples_drawn: attempts.samples_drawn,
+    });
+    let anticipated = plan.anticipated_encounters();
+    *active = Some(ActivePlan {
+        plan,
+        predicted_at_s: time_s,
+        predicted: problem.targets.clone(),
+        anticipated,
+        evasive: false,
+        evasion: None,
+    });
+}
+
+/// The searches of one planner call, from all the rules down: the first
+/// plan found with the level it keeps (`None` if every level failed), and
+/// what every search spent.
+fn search(
+    planners: &mut [Planner],
+    problem: &PlanningProblem,
+    call: &PlanCall,
+) -> (Option<(Plan, Compliance)>, Attempts) {
+    let mut attempts = Attempts {
+        first_error: None,
+        spent: PlanStatistics::default(),
+        samples_drawn: 0,
+    };
     // The last level that searched and failed (`would_repeat` knows
     // whether it found no safe path).
     let mut failed: Option<usize> = None;
@@ -127,60 +190,43 @@ pub(super) fn plan_now(
         let planner = &mut planners[index];
         match planner.plan_with(problem, call.seed, effort) {
             Ok(plan) => {
-                samples_drawn += plan.statistics.samples;
-                if compliance == Compliance::Full {
-                    retry.succeeded();
-                } else {
-                    // A fallback plan is sailed until a compliant one exists.
-                    retry.failed(time_s, &problem.encounters);
-                }
-                let mut statistics = plan.statistics;
-                statistics.elapsed_s += spent.elapsed_s;
-                plans.push(PlanEvent {
-                    time_s,
-                    trigger: call.why,
-                    seed: call.seed,
-                    succeeded: true,
-                    error: first_error.map(|error: vorrt_planner::PlannerError| error.to_string()),
-                    statistics,
-                    waypoints: plan.waypoints.clone(),
-                    evasive_course_deg: None,
-                    evasive_speed_mps: None,
-                    compliance,
-                    samples_drawn,
-                });
-                let anticipated = plan.anticipated_encounters();
-                *active = Some(ActivePlan {
-                    plan,
-                    predicted_at_s: time_s,
-                    predicted: problem.targets.clone(),
-                    anticipated,
-                    evasive: false,
-                    evasion: None,
-                });
-                return;
+                attempts.samples_drawn += plan.statistics.samples;
+                return (Some((plan, compliance)), attempts);
             }
             Err(error) => {
                 if let Some(statistics) = error.statistics() {
-                    samples_drawn += statistics.samples;
-                    spent.elapsed_s += statistics.elapsed_s;
-                    if first_error.is_none() {
-                        let elapsed_s = spent.elapsed_s;
-                        spent = *statistics;
-                        spent.elapsed_s = elapsed_s;
+                    attempts.samples_drawn += statistics.samples;
+                    attempts.spent.elapsed_s += statistics.elapsed_s;
+                    if attempts.first_error.is_none() {
+                        let elapsed_s = attempts.spent.elapsed_s;
+                        attempts.spent = *statistics;
+                        attempts.spent.elapsed_s = elapsed_s;
                     }
                 }
                 failed = Some(index);
-                if first_error.is_none() {
-                    first_error = Some(error);
+                if attempts.first_error.is_none() {
+                    attempts.first_error = Some(error);
                 }
             }
         }
     }
-    retry.failed(time_s, &problem.encounters);
-    if spent.elapsed_s == 0.0 {
-        spent.elapsed_s = started.elapsed().as_secs_f64();
-    }
+    (None, attempts)
+}
+
+/// After every level failed: keeps the plan in force if the planner's
+/// validity check still accepts the rest of it, or else puts the evasive
+/// manoeuvre in force (the one in force held unless another is clearly
+/// better); records the failed call.
+fn fall_back(
+    planners: &[Planner],
+    problem: &PlanningProblem,
+    model: &OwnshipModel,
+    call: &PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+    attempts: Attempts,
+) {
+    let time_s = problem.start_time_s;
     let keep_plan = active.as_ref().is_some_and(|active| {
         !active.evasive
             && planners.first().is_some_and(|planner| {
@@ -220,12 +266,12 @@ pub(super) fn plan_now(
         trigger: call.why,
         seed: call.seed,
         succeeded: false,
-        error: first_error.map(|error| error.to_string()),
-        statistics: spent,
+        error: attempts.first_error.map(|error| error.to_string()),
+        statistics: attempts.spent,
         waypoints: Vec::new(),
         evasive_course_deg: evasion.map(|evasion| evasion.course_rad.to_degrees()),
         evasive_speed_mps: evasion.map(|evasion| evasion.speed_mps),
-        samples_drawn,
+        samples_drawn: attempts.samples_drawn,
         compliance: if keep_plan {
             Compliance::Full
         } else {
