@@ -10,11 +10,28 @@ use vorrt_planner::{
     Waypoint, check_legs, evasive_leg_holding,
 };
 
-use super::target::SimulatedTarget;
-use super::{
-    EVASION_COURSES, EVASION_HORIZON_S, PlanEvent, PlanTrigger, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
-    RETURN_MOVED_S,
-};
+use super::record::{PlanEvent, PlanTrigger};
+
+/// A latched encounter is the one the plan foresaw when their reference
+/// courses agree within this, radians (4°).
+pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
+
+/// After a failed plan (or a fallback plan), seconds until ownship tries
+/// again for a plan that keeps every rule, unless the encounters in force
+/// change first.
+pub const RETRY_AFTER_S: f64 = 20.0;
+
+/// A target's predicted return to its route that moves by more than this
+/// from the one the plan in force assumed asks whether that plan still
+/// holds, seconds: the uncertainty its prediction allows for
+/// (`vorrt_jfs::TURN_TIMING_UNCERTAINTY_S`).
+pub const RETURN_MOVED_S: f64 = vorrt_jfs::TURN_TIMING_UNCERTAINTY_S;
+
+/// How far ahead the evasive course is judged, seconds.
+pub const EVASION_HORIZON_S: f64 = 600.0;
+
+/// How many evenly spaced courses the evasive manoeuvre chooses from (5°).
+pub const EVASION_COURSES: usize = 72;
 
 /// When ownship, sailing a fallback plan (or the evasive manoeuvre), next
 /// tries for a plan that keeps every rule: [`RETRY_AFTER_S`] after the last
@@ -72,6 +89,30 @@ pub(super) struct ActivePlan {
     /// The evasive manoeuvre, when this is one: held again at the next
     /// failure unless another is clearly better (`evasive_leg_holding`).
     pub(super) evasion: Option<EvasiveManeuver>,
+}
+
+impl ActivePlan {
+    /// The plan passed the validity check again at `time_s` with the
+    /// targets now `predicted` and `latches` in force, and is kept: what it
+    /// assumes is brought up to date, so the next trigger is judged against
+    /// the present prediction and an encounter it was checked against is
+    /// foreseen.
+    pub(super) fn kept(
+        &mut self,
+        predicted: Vec<TargetState>,
+        time_s: f64,
+        latches: &[Option<EncounterLatch>],
+    ) {
+        self.predicted = predicted;
+        self.predicted_at_s = time_s;
+        for (expected, latch) in self.anticipated.iter_mut().zip(latches) {
+            if let Some(latch) = latch
+                && !expected.contains(latch)
+            {
+                expected.push(*latch);
+            }
+        }
+    }
 }
 
 /// What one planner call is for.
@@ -337,10 +378,11 @@ pub(super) fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState
     }
 }
 
-/// Whether the plan in force has stopped being valid, and why.
+/// Whether the plan in force has stopped being valid, and why, with the
+/// targets truly at `targets` and predicted as `predicted_now`.
 pub(super) fn replan_trigger(
     active: Option<&ActivePlan>,
-    targets: &[SimulatedTarget],
+    targets: &[VesselState],
     predicted_now: &[TargetState],
     latches: &[Option<EncounterLatch>],
     time_s: f64,
@@ -350,7 +392,7 @@ pub(super) fn replan_trigger(
     let elapsed_s = time_s - active.predicted_at_s;
     for (index, (target, predicted)) in targets.iter().zip(&active.predicted).enumerate() {
         let expected = predicted.predict(elapsed_s).vessel.position_m;
-        if expected.distance(target.state.vessel.position_m) > deviation_m {
+        if expected.distance(target.position_m) > deviation_m {
             return Some(PlanTrigger::TargetOffPrediction { target: index });
         }
     }
