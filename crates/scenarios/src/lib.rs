@@ -17,7 +17,7 @@
 //! | [`geo`] | geographic scenarios: [`LocalFrame`] (latitude/longitude to the local frame), coordinate and start-time checks |
 //! | [`convert`] | [`Scenario::planning_problem`] and the other conversions to SI |
 //! | [`io`] | [`Scenario::from_ron_str`], [`Scenario::load`], [`Scenario::to_ron_string`], [`load_dir`] |
-//! | [`simulation`] | [`simulate`]: the closed loop — ownship follows its plan and replans when it stops being valid; every trajectory recorded. [`ClosedLoop`]: the same run as a value, stepped one time step at a time; [`TargetMotion`]: how a target moves |
+//! | [`simulation`] | [`simulate`]: the closed loop — ownship follows its plan and replans when it stops being valid; every trajectory recorded. [`ClosedLoop`]: the same run as a value, stepped one time step at a time; [`TargetMotion`]: how a target moves ([`RecordedMotion`]: along a recording) |
 //! | [`generator`] | seeded Monte Carlo scenarios: [`OpenSeaSpec`] (targets on near-collision courses in a chosen mix of encounter types) and [`TssSpec`] (crossing a traffic lane at a chosen density), one random stream per scenario index |
 //! | [`batch`] | Monte Carlo batches: [`run_batch`] in parallel (rayon), one [`BatchRow`] per scenario, [`BatchSummary`] (rates, per-rule compliance, percentiles), CSV rows, deterministic [`Shard`]s and merging |
 //! | [`evaluation`] | [`evaluate`]: goal reached, minimum distance per target, COLREGs compliance with violations named, per-rule scores, path overhead |
@@ -73,7 +73,8 @@ pub use scenario::{
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
 pub use simulation::{
-    ClosedLoop, Decision, LoopState, PlanCheck, PlanEvent, PlanTrigger, RunStatus,
-    SimulationRecord, StepOutcome, TargetMotion, simulate, simulate_with,
+    ClosedLoop, Decision, LoopState, PlanCheck, PlanEvent, PlanTrigger, RecordedMotion,
+    RecordedMotionError, RunStatus, SimulationRecord, StepOutcome, TargetMotion, TimedState,
+    simulate, simulate_with,
 };
 pub use validate::{MAX_EXTENT_NM, MAX_LENGTH_M, MAX_SIMULATION_STEPS, MAX_SPEED_KN, MAX_TARGETS};

@@ -201,7 +201,8 @@ impl ClosedLoop {
     /// The scenario's targets as a run seeded with `seed` moves them, each
     /// by its [`Behaviour`](crate::Behaviour), in the scenario's order: the
     /// motions [`with_config`](Self::with_config) uses, to replace some
-    /// before [`with_motions`](Self::with_motions).
+    /// (with a [`RecordedMotion`](super::RecordedMotion), say) before
+    /// [`with_motions`](Self::with_motions).
     #[must_use]
     pub fn scenario_motions(scenario: &Scenario, seed: u64) -> Vec<Box<dyn TargetMotion>> {
         scenario
@@ -217,6 +218,21 @@ impl ClosedLoop {
     /// As [`with_config`](Self::with_config), with every target moved by
     /// `motions` (one per scenario target, in its order, each at time 0)
     /// instead of its behaviour; the targets keep the scenario's names.
+    ///
+    /// ```
+    /// use vorrt_scenarios::{ClosedLoop, RecordedMotion, Scenario, TimedState};
+    /// let scenario = Scenario::load(std::path::Path::new(concat!(
+    ///     env!("CARGO_MANIFEST_DIR"), "/../../fixtures/paper/head_on.ron"))).unwrap();
+    /// let config = scenario.planner_config().unwrap();
+    /// // The head-on target lies stopped where it starts.
+    /// let mut still = scenario.targets[0].state();
+    /// still.speed_mps = 0.0;
+    /// let mut motions = ClosedLoop::scenario_motions(&scenario, 1);
+    /// motions[0] = Box::new(RecordedMotion::new(vec![TimedState { time_s: 0.0, vessel: still }]).unwrap());
+    /// let mut run = ClosedLoop::with_motions(&scenario, &config, 1, motions).unwrap();
+    /// run.step();
+    /// assert_eq!(run.state().targets[0].position_m, still.position_m);
+    /// ```
     ///
     /// # Errors
     /// [`ScenarioError::Invalid`]: field `planner` when `config` is invalid,

@@ -10,7 +10,8 @@
 //! run's seed, so a run is reproducible). Ownship predicts a target from what
 //! it announces (course, speed, destination), or, when it is seen more than
 //! [`OBSERVED_TURN_RAD`] off the course to its destination, holding the course
-//! it is seen on. Every target is behind one seam, [`TargetMotion`].
+//! it is seen on. Every target is behind one seam, [`TargetMotion`], so a
+//! target can also follow a recorded track ([`RecordedMotion`]).
 //!
 //! A replanning trigger (a target more than `replan_deviation_m` off its
 //! prediction, or an encounter the plan did not foresee; paper §III-D) first
@@ -41,6 +42,7 @@ use vorrt_planner::PlannerConfig;
 mod closed_loop;
 mod planning;
 mod record;
+mod recorded;
 mod target;
 
 pub use closed_loop::{
@@ -50,6 +52,7 @@ pub use planning::{
     EVASION_COURSES, EVASION_HORIZON_S, REFERENCE_MATCH_RAD, RETRY_AFTER_S, RETURN_MOVED_S,
 };
 pub use record::{PlanCheck, PlanEvent, PlanTrigger, SimulationRecord, call_seed};
+pub use recorded::{RecordedMotion, RecordedMotionError, TimedState};
 pub use target::{OBSERVED_TURN_RAD, TargetMotion};
 
 /// Runs `scenario` in closed loop with planner seed `seed`.

@@ -19,7 +19,7 @@ pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
 
 /// How one target moves in the closed loop, and how ownship predicts it: the
 /// one seam every target behaviour is behind (the scenario's
-/// [`Behaviour`]s).
+/// [`Behaviour`]s, a recorded track: [`RecordedMotion`](super::RecordedMotion)).
 ///
 /// A motion starts at the closed loop's time 0. The loop asks for the
 /// target's true state at every step ([`vessel`](Self::vessel)), moves it
