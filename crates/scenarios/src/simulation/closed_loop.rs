@@ -434,7 +434,7 @@ impl ClosedLoop {
         self.encounters.advance_to(
             &own,
             self.steady_course_rad,
-            self.target_states.iter().copied(),
+            &self.target_states,
             self.time_s,
             &self.setup.config.rules,
         );
