@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use vorrt_colregs::VesselState;
 use vorrt_scenarios::{
     Behaviour, ClosedLoop, Decision, PlanTrigger, RecordedMotion, RunStatus, Scenario,
-    SimulationRecord, TimedState, simulate,
+    SimulationRecord, StepOutcome, TimedState, simulate,
 };
 
 fn fixture(relative: &str) -> Scenario {
@@ -109,6 +109,11 @@ fn a_run_is_finished_at_its_goal_or_when_its_time_is_up() {
     let last = last.expect("steps");
     assert_eq!(last.status, RunStatus::OutOfTime);
     assert_eq!(last.time_s, 60.0);
+    // An outcome is plain data, for a viewer or a binding.
+    let json = serde_json::to_string(&last).expect("serialises");
+    assert!(json.contains("\"out_of_time\""), "{json}");
+    let back: StepOutcome = serde_json::from_str(&json).expect("reads back");
+    assert_eq!(back, last);
     let record = run.finish();
     assert!(!record.reached_goal);
     assert_eq!(record.times_s.len(), 13);

@@ -11,6 +11,7 @@ use super::target::{BehaviourTarget, TargetMotion};
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use glam::DVec2;
+use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{InstantTurn, OwnshipModel, RateLimitedTurn, TargetState};
@@ -22,7 +23,8 @@ use vorrt_planner::{Plan, Planner, PlannerConfig, PlannerError, PlanningProblem,
 pub const ARRIVAL_TOLERANCE_M: f64 = 0.01;
 
 /// Where a closed-loop run stands.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum RunStatus {
     /// Still under way: [`ClosedLoop::step`] moves it on.
     Running,
@@ -41,7 +43,8 @@ impl RunStatus {
 }
 
 /// What ownship decided at the start of a step, before sailing it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Decision {
     /// No replanning trigger fired: it sailed on with the plan in force.
     SailedOn,
@@ -55,7 +58,7 @@ pub enum Decision {
 }
 
 /// What one [`ClosedLoop::step`] did.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct StepOutcome {
     /// When the step began and ownship decided, seconds.
     pub from_s: f64,

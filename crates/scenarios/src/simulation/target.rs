@@ -25,7 +25,9 @@ pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
 /// target's true state at every step ([`vessel`](Self::vessel)), moves it
 /// one step at a time ([`advance`](Self::advance)), and gives ownship's
 /// planner only [`announced`](Self::announced): a prediction made from what
-/// the target shows at present, as ownship's watch would make it.
+/// the target shows at present, as ownship's watch would make it. A motion
+/// is `Send`, so a run can move to another thread (a batch worker, a
+/// binding).
 pub trait TargetMotion: std::fmt::Debug + Send {
     /// The target's true state at present.
     fn vessel(&self) -> VesselState;
