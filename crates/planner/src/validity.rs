@@ -24,6 +24,7 @@
 use crate::constraint::{Constraint, NoConstraint, Segment};
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
+use glam::DVec2;
 use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
@@ -53,11 +54,9 @@ impl EncounterState {
     }
 
     /// Advances every encounter to ownship's state `own_then`, at `elapsed_s`
-    /// after the tracks' time zero (`time_s` on the clock): latches are
-    /// updated from the new geometry (a new one judged on `steady_course_rad`,
-    /// the course held before any recent turn: [`update_latch_steady`]), and
-    /// the alteration made grows to `own_then`'s course
-    /// ([`alteration_made`]).
+    /// after the tracks' time zero (`time_s` on the clock), with each target
+    /// where its track puts it then: as [`advance_to`](Self::advance_to),
+    /// for the planner's predicted tracks.
     pub fn advance(
         &mut self,
         own_then: &VesselState,
@@ -67,34 +66,77 @@ impl EncounterState {
         time_s: f64,
         rules: &RuleParameters,
     ) {
+        self.advance_with(
+            own_then,
+            steady_course_rad,
+            tracks.iter().map(|track| track.position_at(elapsed_s)),
+            tracks.iter().map(|track| track.state_at(elapsed_s)),
+            time_s,
+            rules,
+        );
+    }
+
+    /// Advances every encounter to ownship's state `own_then` at `time_s`,
+    /// with the targets' states then, in target order (a closed loop's true
+    /// present states): latches are updated from the new geometry (a new
+    /// one judged on `steady_course_rad`, the course held before any recent
+    /// turn: [`update_latch_steady`]), and the alteration made grows to
+    /// `own_then`'s course ([`alteration_made`]). The same operation as
+    /// [`advance`](Self::advance) along a planner's branch, so a closed loop
+    /// carries the encounters as the planner does.
+    pub fn advance_to(
+        &mut self,
+        own_then: &VesselState,
+        steady_course_rad: f64,
+        targets_then: &[VesselState],
+        time_s: f64,
+        rules: &RuleParameters,
+    ) {
+        self.advance_with(
+            own_then,
+            steady_course_rad,
+            targets_then.iter().map(|target| target.position_m),
+            targets_then.iter().copied(),
+            time_s,
+            rules,
+        );
+    }
+
+    /// The one propagation behind [`advance`](Self::advance) and
+    /// [`advance_to`](Self::advance_to), with the targets' positions and
+    /// states then: the ranges need only positions, which a track gives for
+    /// less than its state.
+    fn advance_with(
+        &mut self,
+        own_then: &VesselState,
+        steady_course_rad: f64,
+        positions_then: impl Iterator<Item = DVec2>,
+        states_then: impl Iterator<Item = VesselState>,
+        time_s: f64,
+        rules: &RuleParameters,
+    ) {
         // Whether ownship was acting for some vessel up to now (giving way,
         // or free to act within the action range): a stand-on encounter
         // then carries the course it was free to take.
         let acting_for_others = acting_for_any(
             self.latches
                 .iter()
-                .zip(tracks)
-                .filter_map(|(latch, track)| {
-                    let range_m = own_then.position_m.distance(track.position_at(elapsed_s));
+                .zip(positions_then)
+                .filter_map(|(latch, position_m)| {
+                    let range_m = own_then.position_m.distance(position_m);
                     latch.as_ref().map(|latch| (latch, range_m))
                 }),
             rules,
         );
-        for ((latch, altered), track) in self
+        for ((latch, altered), target) in self
             .latches
             .iter_mut()
             .zip(self.alterations.iter_mut())
-            .zip(tracks)
+            .zip(states_then)
         {
             let before = *latch;
-            *latch = update_latch_steady(
-                before,
-                own_then,
-                steady_course_rad,
-                &track.state_at(elapsed_s),
-                time_s,
-                rules,
-            );
+            *latch =
+                update_latch_steady(before, own_then, steady_course_rad, &target, time_s, rules);
             *altered = alteration_made(
                 before,
                 *latch,

@@ -6,15 +6,32 @@ use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
-    Compliance, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem, SearchEffort,
-    Waypoint, check_legs, evasive_leg_holding,
+    Compliance, EvasionSearch, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem,
+    SearchEffort, Waypoint, evasive_leg_holding,
 };
 
-use super::target::SimulatedTarget;
-use super::{
-    EVASION_COURSES, EVASION_HORIZON_S, PlanEvent, PlanTrigger, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
-    RETURN_MOVED_S,
-};
+use super::record::{PlanEvent, PlanTrigger};
+
+/// A latched encounter is the one the plan foresaw when their reference
+/// courses agree within this, radians (4°).
+pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
+
+/// After a failed plan (or a fallback plan), seconds until ownship tries
+/// again for a plan that keeps every rule, unless the encounters in force
+/// change first.
+pub const RETRY_AFTER_S: f64 = 20.0;
+
+/// A target's predicted return to its route that moves by more than this
+/// from the one the plan in force assumed asks whether that plan still
+/// holds, seconds: the uncertainty its prediction allows for
+/// (`vorrt_jfs::TURN_TIMING_UNCERTAINTY_S`).
+pub const RETURN_MOVED_S: f64 = vorrt_jfs::TURN_TIMING_UNCERTAINTY_S;
+
+/// How far ahead the evasive course is judged, seconds.
+pub const EVASION_HORIZON_S: f64 = 600.0;
+
+/// How many evenly spaced courses the evasive manoeuvre chooses from (5°).
+pub const EVASION_COURSES: usize = 72;
 
 /// When ownship, sailing a fallback plan (or the evasive manoeuvre), next
 /// tries for a plan that keeps every rule: [`RETRY_AFTER_S`] after the last
@@ -74,6 +91,30 @@ pub(super) struct ActivePlan {
     pub(super) evasion: Option<EvasiveManeuver>,
 }
 
+impl ActivePlan {
+    /// The plan passed the validity check again at `time_s` with the
+    /// targets now `predicted` and `latches` in force, and is kept: what it
+    /// assumes is brought up to date, so the next trigger is judged against
+    /// the present prediction and an encounter it was checked against is
+    /// foreseen.
+    pub(super) fn kept(
+        &mut self,
+        predicted: Vec<TargetState>,
+        time_s: f64,
+        latches: &[Option<EncounterLatch>],
+    ) {
+        self.predicted = predicted;
+        self.predicted_at_s = time_s;
+        for (expected, latch) in self.anticipated.iter_mut().zip(latches) {
+            if let Some(latch) = latch
+                && !expected.contains(latch)
+            {
+                expected.push(*latch);
+            }
+        }
+    }
+}
+
 /// What one planner call is for.
 pub(super) struct PlanCall {
     pub(super) why: PlanTrigger,
@@ -81,6 +122,18 @@ pub(super) struct PlanCall {
     pub(super) clearance_m: f64,
     /// How fast ownship changes speed, m/s² (the evasive manoeuvre's).
     pub(super) speed_change_mps2: f64,
+}
+
+/// What the searches of one planner call spent, over every level of the
+/// graded fallback tried.
+struct Attempts {
+    /// The error of the first search that failed, if any did.
+    first_error: Option<vorrt_planner::PlannerError>,
+    /// The failed searches' statistics (the first one's, with the time of
+    /// all).
+    spent: PlanStatistics,
+    /// Random samples drawn by every search.
+    samples_drawn: u64,
 }
 
 /// Calls the planners on `problem`, from all the rules down the graded
@@ -104,9 +157,60 @@ pub(super) fn plan_now(
 ) {
     let time_s = problem.start_time_s;
     let started = Instant::now();
-    let mut first_error = None;
-    let mut spent = PlanStatistics::default();
-    let mut samples_drawn = 0u64;
+    let (found, mut attempts) = search(planners, problem, &call);
+    let Some((plan, compliance)) = found else {
+        retry.failed(time_s, &problem.encounters);
+        if attempts.spent.elapsed_s == 0.0 {
+            attempts.spent.elapsed_s = started.elapsed().as_secs_f64();
+        }
+        fall_back(planners, problem, model, &call, active, plans, attempts);
+        return;
+    };
+    if compliance == Compliance::Full {
+        retry.succeeded();
+    } else {
+        // A fallback plan is sailed until a compliant one exists.
+        retry.failed(time_s, &problem.encounters);
+    }
+    let mut statistics = plan.statistics;
+    statistics.elapsed_s += attempts.spent.elapsed_s;
+    plans.push(PlanEvent {
+        time_s,
+        trigger: call.why,
+        seed: call.seed,
+        succeeded: true,
+        error: attempts.first_error.map(|error| error.to_string()),
+        statistics,
+        waypoints: plan.waypoints.clone(),
+        evasive_course_deg: None,
+        evasive_speed_mps: None,
+        compliance,
+        samples_drawn: attempts.samples_drawn,
+    });
+    let anticipated = plan.anticipated_encounters();
+    *active = Some(ActivePlan {
+        plan,
+        predicted_at_s: time_s,
+        predicted: problem.targets.clone(),
+        anticipated,
+        evasive: false,
+        evasion: None,
+    });
+}
+
+/// The searches of one planner call, from all the rules down: the first
+/// plan found with the level it keeps (`None` if every level failed), and
+/// what every search spent.
+fn search(
+    planners: &mut [Planner],
+    problem: &PlanningProblem,
+    call: &PlanCall,
+) -> (Option<(Plan, Compliance)>, Attempts) {
+    let mut attempts = Attempts {
+        first_error: None,
+        spent: PlanStatistics::default(),
+        samples_drawn: 0,
+    };
     // The last level that searched and failed (`would_repeat` knows
     // whether it found no safe path).
     let mut failed: Option<usize> = None;
@@ -127,84 +231,75 @@ pub(super) fn plan_now(
         let planner = &mut planners[index];
         match planner.plan_with(problem, call.seed, effort) {
             Ok(plan) => {
-                samples_drawn += plan.statistics.samples;
-                if compliance == Compliance::Full {
-                    retry.succeeded();
-                } else {
-                    // A fallback plan is sailed until a compliant one exists.
-                    retry.failed(time_s, &problem.encounters);
-                }
-                let mut statistics = plan.statistics;
-                statistics.elapsed_s += spent.elapsed_s;
-                plans.push(PlanEvent {
-                    time_s,
-                    trigger: call.why,
-                    seed: call.seed,
-                    succeeded: true,
-                    error: first_error.map(|error: vorrt_planner::PlannerError| error.to_string()),
-                    statistics,
-                    waypoints: plan.waypoints.clone(),
-                    evasive_course_deg: None,
-                    evasive_speed_mps: None,
-                    compliance,
-                    samples_drawn,
-                });
-                let anticipated = plan.anticipated_encounters();
-                *active = Some(ActivePlan {
-                    plan,
-                    predicted_at_s: time_s,
-                    predicted: problem.targets.clone(),
-                    anticipated,
-                    evasive: false,
-                    evasion: None,
-                });
-                return;
+                attempts.samples_drawn += plan.statistics.samples;
+                return (Some((plan, compliance)), attempts);
             }
             Err(error) => {
                 if let Some(statistics) = error.statistics() {
-                    samples_drawn += statistics.samples;
-                    spent.elapsed_s += statistics.elapsed_s;
-                    if first_error.is_none() {
-                        let elapsed_s = spent.elapsed_s;
-                        spent = *statistics;
-                        spent.elapsed_s = elapsed_s;
+                    attempts.samples_drawn += statistics.samples;
+                    attempts.spent.elapsed_s += statistics.elapsed_s;
+                    if attempts.first_error.is_none() {
+                        let elapsed_s = attempts.spent.elapsed_s;
+                        attempts.spent = *statistics;
+                        attempts.spent.elapsed_s = elapsed_s;
                     }
                 }
                 failed = Some(index);
-                if first_error.is_none() {
-                    first_error = Some(error);
+                if attempts.first_error.is_none() {
+                    attempts.first_error = Some(error);
                 }
             }
         }
     }
-    retry.failed(time_s, &problem.encounters);
-    if spent.elapsed_s == 0.0 {
-        spent.elapsed_s = started.elapsed().as_secs_f64();
-    }
+    (None, attempts)
+}
+
+/// After every level failed: keeps the plan in force if the planner's
+/// validity check still accepts the rest of it, or else puts the evasive
+/// manoeuvre in force (the one in force held unless another is clearly
+/// better); records the failed call.
+fn fall_back(
+    planners: &[Planner],
+    problem: &PlanningProblem,
+    model: &OwnshipModel,
+    call: &PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+    attempts: Attempts,
+) {
+    let time_s = problem.start_time_s;
     let keep_plan = active.as_ref().is_some_and(|active| {
         !active.evasive
             && planners.first().is_some_and(|planner| {
-                check_legs(
-                    planner.config(),
-                    problem,
-                    &remaining_legs(&active.plan, time_s),
-                )
-                .is_ok()
+                planner
+                    .check_legs(problem, &remaining_legs(&active.plan, time_s))
+                    .is_ok()
             })
     });
     let evasion = if keep_plan {
         None
     } else {
         let holding = active.as_ref().and_then(|active| active.evasion);
-        let (leg, evasion) = evasive_leg_holding(
-            problem,
-            EVASION_HORIZON_S,
-            EVASION_COURSES,
-            call.clearance_m,
+        let search = EvasionSearch {
+            horizon_s: EVASION_HORIZON_S,
+            courses: EVASION_COURSES,
+            clearance_m: call.clearance_m,
             model,
-            call.speed_change_mps2,
-            holding,
-        );
+            speed_change_mps2: call.speed_change_mps2,
+        };
+        // The planner's own evasive manoeuvre: it keeps its constraint too.
+        let (leg, evasion) = match planners.first() {
+            Some(planner) => planner.evasive_leg(problem, &search, holding),
+            None => evasive_leg_holding(
+                problem,
+                search.horizon_s,
+                search.courses,
+                search.clearance_m,
+                model,
+                search.speed_change_mps2,
+                holding,
+            ),
+        };
         *active = Some(ActivePlan {
             plan: leg_plan(leg, time_s),
             predicted_at_s: time_s,
@@ -220,12 +315,12 @@ pub(super) fn plan_now(
         trigger: call.why,
         seed: call.seed,
         succeeded: false,
-        error: first_error.map(|error| error.to_string()),
-        statistics: spent,
+        error: attempts.first_error.map(|error| error.to_string()),
+        statistics: attempts.spent,
         waypoints: Vec::new(),
         evasive_course_deg: evasion.map(|evasion| evasion.course_rad.to_degrees()),
         evasive_speed_mps: evasion.map(|evasion| evasion.speed_mps),
-        samples_drawn,
+        samples_drawn: attempts.samples_drawn,
         compliance: if keep_plan {
             Compliance::Full
         } else {
@@ -291,10 +386,11 @@ pub(super) fn follow(plan: &Plan, own: &VesselState, time_s: f64) -> VesselState
     }
 }
 
-/// Whether the plan in force has stopped being valid, and why.
+/// Whether the plan in force has stopped being valid, and why, with the
+/// targets truly at `targets` and predicted as `predicted_now`.
 pub(super) fn replan_trigger(
     active: Option<&ActivePlan>,
-    targets: &[SimulatedTarget],
+    targets: &[VesselState],
     predicted_now: &[TargetState],
     latches: &[Option<EncounterLatch>],
     time_s: f64,
@@ -304,7 +400,7 @@ pub(super) fn replan_trigger(
     let elapsed_s = time_s - active.predicted_at_s;
     for (index, (target, predicted)) in targets.iter().zip(&active.predicted).enumerate() {
         let expected = predicted.predict(elapsed_s).vessel.position_m;
-        if expected.distance(target.state.vessel.position_m) > deviation_m {
+        if expected.distance(target.position_m) > deviation_m {
             return Some(PlanTrigger::TargetOffPrediction { target: index });
         }
     }

@@ -1,7 +1,7 @@
-//! The targets as the closed loop moves them, by their behaviour, and how
-//! ownship predicts them (from what they announce and are seen doing).
+//! The targets as the closed loop moves them, and how ownship predicts them
+//! (from what they announce and are seen doing): the [`TargetMotion`] seam,
+//! and the scenario's behaviours behind it ([`BehaviourTarget`]).
 
-use super::OBSERVED_TURN_RAD;
 use crate::scenario::{Behaviour, COLREGS_TURN_DEG, NOISE_TIME_CONSTANT_S};
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};
@@ -12,31 +12,69 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::TargetState;
 
-/// One target as the simulation moves it.
+/// A target that is seen this far off the course to its announced
+/// destination is predicted on the course it is seen on, radians (10°, twice
+/// the course noise of a `noisy` target).
+pub const OBSERVED_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
+
+/// How one target moves in the closed loop, and how ownship predicts it: the
+/// one seam every target behaviour is behind (the scenario's
+/// [`Behaviour`]s, a recorded track: [`RecordedMotion`](super::RecordedMotion)).
+///
+/// A motion starts at the closed loop's time 0. The loop asks for the
+/// target's true state at every step ([`vessel`](Self::vessel)), moves it
+/// one step at a time ([`advance`](Self::advance)), and gives ownship's
+/// planner only [`announced`](Self::announced): a prediction made from what
+/// the target shows at present, as ownship's watch would make it. A motion
+/// is `Send`, so a run can move to another thread (a batch worker, a
+/// binding).
+pub trait TargetMotion: std::fmt::Debug + Send {
+    /// The target's true state at present.
+    fn vessel(&self) -> VesselState;
+
+    /// Moves the target from `time_s` to `next_time_s` on the loop's clock;
+    /// `own` is ownship at `time_s` (a target that reacts to ownship sees it
+    /// there), `rules` the run's rule constants.
+    fn advance(&mut self, time_s: f64, next_time_s: f64, own: &VesselState, rules: &RuleParameters);
+
+    /// How ownship (`own`, with `encounter` latched against this target, if
+    /// any) predicts the target now. Only what the target shows at present
+    /// may go into it (its state seen by AIS and radar, the course, speed
+    /// and destination it broadcasts), never where it will truly be: that is
+    /// what ownship's planner is given.
+    fn announced(
+        &self,
+        own: &VesselState,
+        encounter: Option<Encounter>,
+        rules: &RuleParameters,
+    ) -> TargetState;
+}
+
+/// A scenario's target, moved by its [`Behaviour`].
 #[derive(Debug, Clone)]
-pub(super) struct SimulatedTarget {
+pub(super) struct BehaviourTarget {
     /// Where it is now; `goal_m` is the goal it steers for (`None` once a
     /// [`Behaviour::SuddenTurn`] target has turned, or without a goal).
-    pub(super) state: TargetState,
-    pub(super) behaviour: Behaviour,
+    state: TargetState,
+    behaviour: Behaviour,
     /// The speed it announces and returns to, m/s.
-    pub(super) nominal_speed_mps: f64,
+    nominal_speed_mps: f64,
     /// The course it holds when it has no goal, radians.
-    pub(super) nominal_course_rad: f64,
+    nominal_course_rad: f64,
     /// The noise stream of a [`Behaviour::Noisy`] target.
-    pub(super) noise: Option<ChaCha8Rng>,
-    pub(super) course_offset_rad: f64,
-    pub(super) speed_offset_mps: f64,
+    noise: Option<ChaCha8Rng>,
+    course_offset_rad: f64,
+    speed_offset_mps: f64,
     /// A [`Behaviour::Colregs`] target's encounter with ownship, from its side.
-    pub(super) latch: Option<EncounterLatch>,
+    latch: Option<EncounterLatch>,
     /// The course a giving-way [`Behaviour::Colregs`] target holds.
-    pub(super) avoiding_course_rad: Option<f64>,
+    avoiding_course_rad: Option<f64>,
     /// Whether a [`Behaviour::SuddenTurn`] target has turned.
-    pub(super) turned: bool,
+    turned: bool,
 }
 
 /// The seed of target `index`'s noise stream in a run seeded with `seed`.
-pub(super) fn noise_stream(seed: u64, index: usize) -> ChaCha8Rng {
+fn noise_stream(seed: u64, index: usize) -> ChaCha8Rng {
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6E6F_6973_795F_7467);
     rng.set_stream(index as u64);
     rng
@@ -50,7 +88,8 @@ fn standard_normal(rng: &mut ChaCha8Rng) -> f64 {
     (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
 
-impl SimulatedTarget {
+impl BehaviourTarget {
+    /// Target `index` of a run seeded with `seed`, as `spec` describes it.
     pub(super) fn new(spec: &crate::VesselSpec, index: usize, seed: u64) -> Self {
         let state = match spec.behaviour {
             Behaviour::ConstantVelocity => TargetState::constant_velocity(spec.state()),
@@ -72,15 +111,52 @@ impl SimulatedTarget {
         }
     }
 
-    /// Moves the target from `time_s` on by `duration_s`; `own` is ownship at
-    /// `time_s`.
-    pub(super) fn advance(
+    /// The course the target would steer undisturbed: for its goal, or its
+    /// nominal course without one.
+    fn intended_course_rad(&self) -> f64 {
+        match self.state.goal_m {
+            Some(goal) if goal != self.state.vessel.position_m => {
+                angle::unit_to_course(goal - self.state.vessel.position_m)
+            }
+            Some(_) => self.state.vessel.course_rad,
+            None => self.nominal_course_rad,
+        }
+    }
+
+    /// Sails `duration_s` at `course_rad` and `speed_mps`, stopping on the
+    /// goal if it comes within reach.
+    fn steer(&mut self, course_rad: f64, speed_mps: f64, duration_s: f64) {
+        let vessel = &mut self.state.vessel;
+        if self.state.goal_m == Some(vessel.position_m) {
+            vessel.speed_mps = 0.0;
+            return;
+        }
+        vessel.course_rad = angle::normalize_2pi(course_rad);
+        vessel.speed_mps = speed_mps;
+        let travel_m = speed_mps * duration_s;
+        match self.state.goal_m {
+            Some(goal) if vessel.position_m.distance(goal) <= travel_m => {
+                vessel.position_m = goal;
+                vessel.speed_mps = 0.0;
+            }
+            _ => vessel.position_m += angle::velocity(vessel.course_rad, speed_mps) * duration_s,
+        }
+    }
+}
+
+impl TargetMotion for BehaviourTarget {
+    fn vessel(&self) -> VesselState {
+        self.state.vessel
+    }
+
+    fn advance(
         &mut self,
-        duration_s: f64,
         time_s: f64,
+        next_time_s: f64,
         own: &VesselState,
         rules: &RuleParameters,
     ) {
+        let duration_s = next_time_s - time_s;
         match self.behaviour {
             Behaviour::SuddenTurn { at_s, turn_deg } => {
                 if !self.turned && time_s + duration_s >= at_s {
@@ -135,38 +211,6 @@ impl SimulatedTarget {
         }
     }
 
-    /// The course the target would steer undisturbed: for its goal, or its
-    /// nominal course without one.
-    fn intended_course_rad(&self) -> f64 {
-        match self.state.goal_m {
-            Some(goal) if goal != self.state.vessel.position_m => {
-                angle::unit_to_course(goal - self.state.vessel.position_m)
-            }
-            Some(_) => self.state.vessel.course_rad,
-            None => self.nominal_course_rad,
-        }
-    }
-
-    /// Sails `duration_s` at `course_rad` and `speed_mps`, stopping on the
-    /// goal if it comes within reach.
-    fn steer(&mut self, course_rad: f64, speed_mps: f64, duration_s: f64) {
-        let vessel = &mut self.state.vessel;
-        if self.state.goal_m == Some(vessel.position_m) {
-            vessel.speed_mps = 0.0;
-            return;
-        }
-        vessel.course_rad = angle::normalize_2pi(course_rad);
-        vessel.speed_mps = speed_mps;
-        let travel_m = speed_mps * duration_s;
-        match self.state.goal_m {
-            Some(goal) if vessel.position_m.distance(goal) <= travel_m => {
-                vessel.position_m = goal;
-                vessel.speed_mps = 0.0;
-            }
-            _ => vessel.position_m += angle::velocity(vessel.course_rad, speed_mps) * duration_s,
-        }
-    }
-
     /// How ownship (`own`, with `encounter` latched against this target, if
     /// any) predicts the target: from what it broadcasts (AIS: course, speed,
     /// destination) and what it is seen doing. A goal-bound target is
@@ -176,7 +220,7 @@ impl SimulatedTarget {
     /// ([`passing_time_s`]), and then steering for its goal again. Any
     /// other target holds its course at its nominal speed (its present
     /// course and speed for the constant-motion behaviours).
-    pub(super) fn announced(
+    fn announced(
         &self,
         own: &VesselState,
         encounter: Option<Encounter>,
@@ -248,7 +292,7 @@ impl SimulatedTarget {
 
 /// How far ahead a target off its route is followed to the moment it has
 /// passed ownship, seconds (beyond it, it is predicted on its course for ever).
-pub(super) const PASSING_HORIZON_S: f64 = 300.0;
+const PASSING_HORIZON_S: f64 = 300.0;
 
 /// The step of that search, seconds.
 const PASSING_STEP_S: f64 = 5.0;
@@ -261,7 +305,7 @@ const PASSING_STEP_S: f64 = 5.0;
 /// and clear" (rule 8(d)) is free to return to its route. `None` when they
 /// have not passed within [`PASSING_HORIZON_S`] (an overtaking vessel that
 /// falls back on its avoiding course never gets past).
-pub(super) fn passing_time_s(
+fn passing_time_s(
     own: &VesselState,
     target: &VesselState,
     encounter: Encounter,
