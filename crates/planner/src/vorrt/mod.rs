@@ -29,7 +29,7 @@ use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose, TargetState};
 
 mod extract;
 
@@ -151,7 +151,7 @@ impl<C: Constraint> Planner<C> {
     }
 
     /// Plans a safe, COLREGs-compliant path for `problem`, drawing every
-    /// random choice from a ChaCha8 stream seeded with `seed`.
+    /// random choice from a `ChaCha8` stream seeded with `seed`.
     ///
     /// # Errors
     /// [`PlannerError::InvalidProblem`] for a malformed problem,
@@ -232,34 +232,9 @@ impl<C: Constraint> Planner<C> {
         let own = problem.ownship;
         self.tracks.clear();
         self.tracks
-            .extend(problem.targets.iter().map(|target| target.track()));
+            .extend(problem.targets.iter().map(TargetState::track));
         let targets = self.tracks.len();
-        let root_latches: Vec<Option<EncounterLatch>> = (0..targets)
-            .map(|index| {
-                let previous = problem.encounters.get(index).copied().flatten();
-                update_latch(
-                    previous,
-                    &own,
-                    &self.tracks[index].state_at(0.0),
-                    problem.start_time_s,
-                    &config.rules,
-                )
-            })
-            .collect();
-        // The alteration already made for an encounter carried over from a
-        // previous plan (a closed loop passes it), else none.
-        let root_alterations: Vec<f64> = (0..targets)
-            .map(|index| {
-                let carried = problem.encounters.get(index).copied().flatten();
-                match (carried, root_latches[index]) {
-                    (Some(was), Some(now)) if was == now => {
-                        problem.alterations.get(index).copied().unwrap_or(0.0)
-                    }
-                    _ => 0.0,
-                }
-            })
-            .collect();
-
+        let (root_latches, root_alterations) = self.root_encounters(problem);
         let margin = DVec2::splat(config.sampling_margin_m);
         let mut sampler = Sampler::new(
             seed,
@@ -347,6 +322,41 @@ impl<C: Constraint> Planner<C> {
         })
     }
 
+    /// The encounters in force at the root, each updated from the one a
+    /// previous plan carried over (a closed loop passes them), and the
+    /// alteration already made for each.
+    fn root_encounters(
+        &self,
+        problem: &PlanningProblem,
+    ) -> (Vec<Option<EncounterLatch>>, Vec<f64>) {
+        let root_latches: Vec<Option<EncounterLatch>> = (0..self.tracks.len())
+            .map(|index| {
+                let previous = problem.encounters.get(index).copied().flatten();
+                update_latch(
+                    previous,
+                    &problem.ownship,
+                    &self.tracks[index].state_at(0.0),
+                    problem.start_time_s,
+                    &self.config.rules,
+                )
+            })
+            .collect();
+        // The alteration already made for an encounter carried over from a
+        // previous plan (a closed loop passes it), else none.
+        let root_alterations: Vec<f64> = (0..self.tracks.len())
+            .map(|index| {
+                let carried = problem.encounters.get(index).copied().flatten();
+                match (carried, root_latches[index]) {
+                    (Some(was), Some(now)) if was == now => {
+                        problem.alterations.get(index).copied().unwrap_or(0.0)
+                    }
+                    _ => 0.0,
+                }
+            })
+            .collect();
+        (root_latches, root_alterations)
+    }
+
     /// One phase of Algorithm 2: grow until the goal is reached, the phase's
     /// node quota is met, or its sample budget is spent.
     fn grow(
@@ -374,9 +384,9 @@ impl<C: Constraint> Planner<C> {
             max_turn_rad: config.max_turn_per_step_rad,
         };
         let mut accepted = 0usize;
-        let mut samples = 0usize;
-        while accepted < config.nodes_per_phase && samples < config.samples_per_phase {
-            samples += 1;
+        let mut samples_drawn = 0usize;
+        while accepted < config.nodes_per_phase && samples_drawn < config.samples_per_phase {
+            samples_drawn += 1;
             statistics.samples += 1;
             if let Some(budget_s) = config.time_budget_s
                 && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
@@ -445,36 +455,61 @@ impl<C: Constraint> Planner<C> {
             if to_goal == 0.0 {
                 return Ok(Growth::Reached(node));
             }
-            if to_goal <= config.goal_tolerance_m {
-                // The final segment onto the goal, checked like any other.
-                let final_leg = Leg::straight(
-                    position,
-                    angle::unit_to_course(problem.goal_m - position),
-                    to_goal,
+            if to_goal <= config.goal_tolerance_m
+                && let Some(goal) = close_onto_goal(
+                    &mut self.tree,
+                    &mut self.scratch,
+                    &checker,
+                    problem,
+                    node,
                     own.speed_mps,
-                );
-                let final_elapsed_s = self.tree.times[node as usize] - problem.start_time_s;
-                self.scratch
-                    .set(self.tree.latches_of(node), self.tree.alterations_of(node));
-                match checker.validate(&final_leg, final_elapsed_s, &mut self.scratch) {
-                    Ok(()) => {
-                        // Exactly on the goal, whatever the rounding of
-                        // start + velocity × duration.
-                        let goal = self.tree.push(
-                            problem.goal_m,
-                            final_leg.course_rad,
-                            problem.start_time_s + final_elapsed_s + final_leg.duration_s(),
-                            node,
-                            &self.scratch.latches,
-                            &self.scratch.alterations,
-                        );
-                        return Ok(Growth::Reached(goal));
-                    }
-                    Err(cause) => statistics.rejections.record(cause),
-                }
+                    &mut statistics.rejections,
+                )
+            {
+                return Ok(Growth::Reached(goal));
             }
         }
         Ok(Growth::Exhausted)
+    }
+}
+
+/// The final segment from `node`, within `goal_tolerance_m` of the goal,
+/// onto the goal, checked like any other move: the goal's node when the
+/// segment is valid, else `None` with its cause counted in `rejections`.
+fn close_onto_goal<V: MotionValidator>(
+    tree: &mut Tree,
+    scratch: &mut EncounterState,
+    checker: &V,
+    problem: &PlanningProblem,
+    node: u32,
+    speed_mps: f64,
+    rejections: &mut RejectionCounts,
+) -> Option<u32> {
+    let position = tree.positions[node as usize];
+    let to_goal = position.distance(problem.goal_m);
+    let final_leg = Leg::straight(
+        position,
+        angle::unit_to_course(problem.goal_m - position),
+        to_goal,
+        speed_mps,
+    );
+    let final_elapsed_s = tree.times[node as usize] - problem.start_time_s;
+    scratch.set(tree.latches_of(node), tree.alterations_of(node));
+    match checker.validate(&final_leg, final_elapsed_s, scratch) {
+        // Exactly on the goal, whatever the rounding of start + velocity ×
+        // duration.
+        Ok(()) => Some(tree.push(
+            problem.goal_m,
+            final_leg.course_rad,
+            problem.start_time_s + final_elapsed_s + final_leg.duration_s(),
+            node,
+            &scratch.latches,
+            &scratch.alterations,
+        )),
+        Err(cause) => {
+            rejections.record(cause);
+            None
+        }
     }
 }
 
@@ -486,6 +521,12 @@ mod tests {
 
     /// The smallest distance between hulls along `plan`, sampled every 2 s,
     /// to a target on `track`.
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        clippy::cast_precision_loss,
+        reason = "a plan's duration is finite and positive, a few thousand 2 s steps"
+    )]
     fn min_hull_distance_m(plan: &Plan, track: &LinearTrack, own_length_m: f64) -> f64 {
         let contact_m = vorrt_colregs::rules::contact_range_m(own_length_m, track.vessel.length_m);
         let steps = (plan.duration_s() / 2.0).ceil() as usize;
