@@ -235,22 +235,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
     };
     let keep = |leg: &Leg| leg_min_distance_m(leg, &tracks, own.length_m, horizon_s);
     let admitted = |leg: &Leg| leg_keeps_constraint(leg, constraint);
-    let courses = courses.max(1);
-    #[expect(
-        clippy::cast_precision_loss,
-        reason = "a count of courses, far below 2^52"
-    )]
-    let spacing = std::f64::consts::TAU / courses as f64;
-    // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
-    // -2s, ...; at each speed in turn.
-    #[expect(
-        clippy::cast_precision_loss,
-        reason = "a count of course steps, far below 2^52"
-    )]
-    let turns = std::iter::once(0.0).chain(
-        (1..=courses / 2)
-            .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
-    );
+    let turns = turns_rad(courses);
     // The manoeuvre in force, judged afresh, first; it stays the best unless
     // another keeps the clearance or keeps clearly farther.
     let mut held: Option<(Leg, EvasiveManeuver)> = None;
@@ -283,10 +268,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
                 min_distance_m,
             };
             if !admitted(&leg) {
-                if refused
-                    .as_ref()
-                    .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
-                {
+                if keeps_farther(refused.as_ref(), min_distance_m) {
                     refused = Some((leg, maneuver));
                 }
                 continue;
@@ -294,10 +276,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
             if min_distance_m >= clearance_m {
                 return (leg, maneuver);
             }
-            if best
-                .as_ref()
-                .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
-            {
+            if keeps_farther(best.as_ref(), min_distance_m) {
                 best = Some((leg, maneuver));
             }
         }
@@ -318,6 +297,35 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
         };
         (leg, maneuver)
     })
+}
+
+/// The turns from the present course to try, radians, among `courses`
+/// evenly spaced courses (at least one): holding on, then turns in order of
+/// size, starboard first.
+fn turns_rad(courses: usize) -> impl Iterator<Item = f64> + Clone {
+    let courses = courses.max(1);
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count of courses, far below 2^52"
+    )]
+    let spacing = std::f64::consts::TAU / courses as f64;
+    // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
+    // -2s, ...
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count of course steps, far below 2^52"
+    )]
+    let turns = std::iter::once(0.0).chain(
+        (1..=courses / 2)
+            .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
+    );
+    turns
+}
+
+/// Whether a leg keeping `min_distance_m` keeps farther than the one in
+/// `kept`, if any.
+fn keeps_farther(kept: Option<&(Leg, EvasiveManeuver)>, min_distance_m: f64) -> bool {
+    kept.is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
 }
 
 /// The smallest distance between the hulls of ownship sailing `leg` (then

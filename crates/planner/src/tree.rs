@@ -12,6 +12,7 @@ use glam::DVec2;
 use rstar::RTree;
 use rstar::primitives::GeomWithData;
 use vorrt_colregs::EncounterLatch;
+use vorrt_jfs::Pose;
 
 type IndexedPoint = GeomWithData<[f64; 2], u32>;
 
@@ -128,6 +129,15 @@ impl Tree {
     #[must_use]
     pub(crate) fn len(&self) -> usize {
         self.positions.len()
+    }
+
+    /// Where `node` lies and the course it was reached on.
+    #[must_use]
+    pub(crate) fn pose_of(&self, node: u32) -> Pose {
+        Pose {
+            position_m: self.positions[node as usize],
+            course_rad: self.courses[node as usize],
+        }
     }
 
     /// Adds a node and returns its index; `latches` and `alterations` hold

@@ -29,7 +29,7 @@ use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose, TargetState};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, TargetState};
 
 mod extract;
 
@@ -283,24 +283,7 @@ impl<C: Constraint> Planner<C> {
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
             } else {
-                let mut found = None;
-                let phases = match effort {
-                    SearchEffort::Full => 2,
-                    SearchEffort::FirstPhase => 1,
-                };
-                for goal_bias in [config.goal_bias, config.phase_two_goal_bias]
-                    .into_iter()
-                    .take(phases)
-                {
-                    match self.grow(problem, &mut sampler, goal_bias, &mut statistics, started)? {
-                        Growth::Reached(node) => {
-                            found = Some(node);
-                            break;
-                        }
-                        Growth::Exhausted => {}
-                    }
-                }
-                found
+                self.grow_phases(problem, &mut sampler, effort, &mut statistics, started)?
             };
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
@@ -357,6 +340,34 @@ impl<C: Constraint> Planner<C> {
         (root_latches, root_alterations)
     }
 
+    /// The phases `effort` asks for (the second with its own goal bias),
+    /// each growing the tree until the goal is reached: the goal's node, or
+    /// `None` when every phase was spent first.
+    fn grow_phases(
+        &mut self,
+        problem: &PlanningProblem,
+        sampler: &mut Sampler,
+        effort: SearchEffort,
+        statistics: &mut PlanStatistics,
+        started: Instant,
+    ) -> Result<Option<u32>, PlannerError> {
+        let phases = match effort {
+            SearchEffort::Full => 2,
+            SearchEffort::FirstPhase => 1,
+        };
+        for goal_bias in [self.config.goal_bias, self.config.phase_two_goal_bias]
+            .into_iter()
+            .take(phases)
+        {
+            if let Growth::Reached(node) =
+                self.grow(problem, sampler, goal_bias, statistics, started)?
+            {
+                return Ok(Some(node));
+            }
+        }
+        Ok(None)
+    }
+
     /// One phase of Algorithm 2: grow until the goal is reached, the phase's
     /// node quota is met, or its sample budget is spent.
     fn grow(
@@ -388,17 +399,7 @@ impl<C: Constraint> Planner<C> {
         while accepted < config.nodes_per_phase && samples_drawn < config.samples_per_phase {
             samples_drawn += 1;
             statistics.samples += 1;
-            if let Some(budget_s) = config.time_budget_s
-                && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
-                && started.elapsed().as_secs_f64() > budget_s
-            {
-                statistics.nodes = self.tree.len() as u64;
-                statistics.elapsed_s = started.elapsed().as_secs_f64();
-                return Err(PlannerError::BudgetExhausted {
-                    budget_s,
-                    statistics: Box::new(*statistics),
-                });
-            }
+            check_time_budget(&config, statistics, started, &self.tree)?;
             let sample = sampler.sample(problem.goal_m, goal_bias);
             // Only where the user's constraint admits a point (in water).
             if sample != problem.goal_m && !self.constraint.admits_point(sample) {
@@ -422,10 +423,7 @@ impl<C: Constraint> Planner<C> {
                 statistics.rejections.record(cause);
                 continue;
             }
-            let from = Pose {
-                position_m: self.tree.positions[parent as usize],
-                course_rad: self.tree.courses[parent as usize],
-            };
+            let from = self.tree.pose_of(parent);
             let Some(leg) = model.steer(from, sample, own.speed_mps, config.step_m) else {
                 continue;
             };
@@ -471,6 +469,29 @@ impl<C: Constraint> Planner<C> {
         }
         Ok(Growth::Exhausted)
     }
+}
+
+/// Once the clock, read every [`CLOCK_EVERY_SAMPLES`] samples, passes the
+/// configured time budget: [`PlannerError::BudgetExhausted`] with the
+/// statistics so far, `tree` counted as grown.
+fn check_time_budget(
+    config: &PlannerConfig,
+    statistics: &mut PlanStatistics,
+    started: Instant,
+    tree: &Tree,
+) -> Result<(), PlannerError> {
+    if let Some(budget_s) = config.time_budget_s
+        && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
+        && started.elapsed().as_secs_f64() > budget_s
+    {
+        statistics.nodes = tree.len() as u64;
+        statistics.elapsed_s = started.elapsed().as_secs_f64();
+        return Err(PlannerError::BudgetExhausted {
+            budget_s,
+            statistics: Box::new(*statistics),
+        });
+    }
+    Ok(())
 }
 
 /// The final segment from `node`, within `goal_tolerance_m` of the goal,
