@@ -183,7 +183,7 @@ pub struct PlannerConfig {
     /// looks for one alteration that passes every target this wide (between
     /// the hulls), and only then for one that keeps `clearance_m`, the hard
     /// floor. Masters' standing orders ask for far more than a small craft's
-    /// d_th (1-2 nm in open water), and a wider pass leaves room for a vessel
+    /// `d_th` (1-2 nm in open water), and a wider pass leaves room for a vessel
     /// that does not do what it was predicted to. 1 (or less) turns it off.
     pub preferred_clearance_factor: f64,
     /// A node this close to the goal tries a final segment onto it, metres.
@@ -285,6 +285,15 @@ pub const MAX_NODES_PER_ROUTE_STEP: f64 = 1_000.0;
 /// The most restarts the planner accepts as configuration.
 pub const MAX_RESTARTS: usize = 1_000;
 
+/// The error for `field` holding `value` where `expected` was wanted.
+fn invalid(field: &'static str, value: f64, expected: &'static str) -> Result<(), PlannerError> {
+    Err(PlannerError::InvalidConfig {
+        field,
+        value,
+        expected,
+    })
+}
+
 impl PlannerConfig {
     /// The configuration a plan over a straight route of `route_m` metres
     /// runs with: budgets that follow the route length, so that long routes
@@ -307,6 +316,13 @@ impl PlannerConfig {
     /// assert_eq!(long.samples_per_phase, 27_780);
     /// ```
     #[must_use]
+    #[expect(
+        clippy::cast_precision_loss,
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "node and sample counts are at most 1e7, exact in f64; the \
+                  rounded-up budgets are positive and clamped to those maxima"
+    )]
     pub fn for_route(&self, route_m: f64) -> PlannerConfig {
         let needed = (self.nodes_per_route_step * route_m / self.step_m).ceil();
         // NaN (a non-finite route) keeps the configured budgets.
@@ -330,13 +346,14 @@ impl PlannerConfig {
     /// # Errors
     /// [`PlannerError::InvalidConfig`] naming the first field out of range.
     pub fn validate(&self) -> Result<(), PlannerError> {
-        let invalid = |field: &'static str, value: f64, expected: &'static str| {
-            Err(PlannerError::InvalidConfig {
-                field,
-                value,
-                expected,
-            })
-        };
+        self.validate_geometry()?;
+        self.validate_budgets()?;
+        self.validate_rates()?;
+        self.rules.validate().map_err(PlannerError::from)
+    }
+
+    /// The lengths, times, factors, probabilities and turn per step.
+    fn validate_geometry(&self) -> Result<(), PlannerError> {
         let positive = [
             ("step_m", self.step_m),
             ("clearance_m", self.clearance_m),
@@ -378,6 +395,15 @@ impl PlannerConfig {
                 "an angle in (0, π]",
             );
         }
+        Ok(())
+    }
+
+    /// The node, sample and restart budgets.
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count out of range is only reported, as the error's value"
+    )]
+    fn validate_budgets(&self) -> Result<(), PlannerError> {
         if self.nodes_per_phase == 0 || self.nodes_per_phase > MAX_NODES_PER_PHASE {
             return invalid(
                 "nodes_per_phase",
@@ -408,6 +434,11 @@ impl PlannerConfig {
                 "a whole number from 0 to 1000",
             );
         }
+        Ok(())
+    }
+
+    /// The time budget and the rates of turn and of speed change.
+    fn validate_rates(&self) -> Result<(), PlannerError> {
         if let Some(budget) = self.time_budget_s
             && !(budget.is_finite() && budget > 0.0)
         {
@@ -437,7 +468,7 @@ impl PlannerConfig {
                 "a finite rate of speed change greater than 0 m/s²",
             );
         }
-        self.rules.validate().map_err(PlannerError::from)
+        Ok(())
     }
 
     /// How fast ownship (`length_m`, service speed `service_speed_mps`)

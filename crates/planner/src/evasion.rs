@@ -23,7 +23,7 @@ use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::contact_range_m;
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, MotionModel, Pose};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose, TargetState};
 
 /// A course to steer and what it is expected to keep.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -223,11 +223,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
         position_m: own.position_m,
         course_rad: own.course_rad,
     };
-    let tracks: Vec<_> = problem
-        .targets
-        .iter()
-        .map(|target| target.track())
-        .collect();
+    let tracks: Vec<_> = problem.targets.iter().map(TargetState::track).collect();
     let leg_for = |course_rad: f64, speed_mps: f64| {
         // Long enough for the horizon at the faster speed, then cut to it
         // (a leg that stops ends where ownship stops).
@@ -237,76 +233,9 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
             .from_speed(own.speed_mps, speed_change_mps2)
             .until(horizon_s)
     };
-    let keep = |leg: &Leg| {
-        let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
-        let sailed = leg
-            .pieces(0.0)
-            .map(|piece| {
-                tracks
-                    .iter()
-                    .map(|track| {
-                        min_distance_over(
-                            piece.start_m,
-                            piece.velocity_mps,
-                            track,
-                            piece.elapsed_s,
-                            piece.duration_s,
-                        ) - contact_range_m(own.length_m, track.vessel.length_m)
-                            - if piece.turning {
-                                piece_error_m
-                            } else {
-                                timing_error_m
-                            }
-                    })
-                    .fold(f64::INFINITY, f64::min)
-            })
-            .fold(f64::INFINITY, f64::min);
-        // Stopped short of the horizon: lying still for the rest of it.
-        let still_s = horizon_s - leg.duration_s();
-        let lying = if still_s > 0.0 {
-            tracks
-                .iter()
-                .map(|track| {
-                    min_distance_over(leg.end_m(), DVec2::ZERO, track, leg.duration_s(), still_s)
-                        - contact_range_m(own.length_m, track.vessel.length_m)
-                })
-                .fold(f64::INFINITY, f64::min)
-        } else {
-            f64::INFINITY
-        };
-        sailed.min(lying)
-    };
-    // Whether the leg keeps the user's constraint along the curve sailed.
-    let admitted = |leg: &Leg| {
-        let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
-        leg.pieces(0.0).all(|piece| {
-            let margin_m = if piece.turning {
-                piece_error_m
-            } else if piece.transient() {
-                timing_error_m
-            } else {
-                0.0
-            };
-            constraint
-                .check_segment(&Segment {
-                    start_m: piece.start_m,
-                    end_m: piece.end_m(),
-                    margin_m,
-                    start_elapsed_s: piece.elapsed_s,
-                    duration_s: piece.duration_s,
-                    course_rad: piece.course_rad,
-                })
-                .is_ok()
-        })
-    };
-    let courses = courses.max(1);
-    let spacing = std::f64::consts::TAU / courses as f64;
-    // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
-    // -2s, ...; at each speed in turn.
-    let turns = std::iter::once(0.0).chain(
-        (1..=courses / 2)
-            .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
-    );
+    let keep = |leg: &Leg| leg_min_distance_m(leg, &tracks, own.length_m, horizon_s);
+    let admitted = |leg: &Leg| leg_keeps_constraint(leg, constraint);
+    let turns = turns_rad(courses);
     // The manoeuvre in force, judged afresh, first; it stays the best unless
     // another keeps the clearance or keeps clearly farther.
     let mut held: Option<(Leg, EvasiveManeuver)> = None;
@@ -339,10 +268,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
                 min_distance_m,
             };
             if !admitted(&leg) {
-                if refused
-                    .as_ref()
-                    .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
-                {
+                if keeps_farther(refused.as_ref(), min_distance_m) {
                     refused = Some((leg, maneuver));
                 }
                 continue;
@@ -350,10 +276,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
             if min_distance_m >= clearance_m {
                 return (leg, maneuver);
             }
-            if best
-                .as_ref()
-                .is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
-            {
+            if keeps_farther(best.as_ref(), min_distance_m) {
                 best = Some((leg, maneuver));
             }
         }
@@ -376,6 +299,102 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
     })
 }
 
+/// The turns from the present course to try, radians, among `courses`
+/// evenly spaced courses (at least one): holding on, then turns in order of
+/// size, starboard first.
+fn turns_rad(courses: usize) -> impl Iterator<Item = f64> + Clone {
+    let courses = courses.max(1);
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count of courses, far below 2^52"
+    )]
+    let spacing = std::f64::consts::TAU / courses as f64;
+    // Holding on, then turns in order of size, starboard first: +s, -s, +2s,
+    // -2s, ...
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count of course steps, far below 2^52"
+    )]
+    let turns = std::iter::once(0.0).chain(
+        (1..=courses / 2)
+            .flat_map(move |step| [1.0, -1.0].map(|sign| sign * spacing * step as f64)),
+    );
+    turns
+}
+
+/// Whether a leg keeping `min_distance_m` keeps farther than the one in
+/// `kept`, if any.
+fn keeps_farther(kept: Option<&(Leg, EvasiveManeuver)>, min_distance_m: f64) -> bool {
+    kept.is_none_or(|(_, kept)| min_distance_m > kept.min_distance_m)
+}
+
+/// The smallest distance between the hulls of ownship sailing `leg` (then
+/// lying still to `horizon_s` if it stops short) and any of `tracks`,
+/// metres, less the leg's own error where it turns or changes speed.
+fn leg_min_distance_m(leg: &Leg, tracks: &[LinearTrack], own_length_m: f64, horizon_s: f64) -> f64 {
+    let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
+    let sailed = leg
+        .pieces(0.0)
+        .map(|piece| {
+            tracks
+                .iter()
+                .map(|track| {
+                    min_distance_over(
+                        piece.start_m,
+                        piece.velocity_mps,
+                        track,
+                        piece.elapsed_s,
+                        piece.duration_s,
+                    ) - contact_range_m(own_length_m, track.vessel.length_m)
+                        - if piece.turning {
+                            piece_error_m
+                        } else {
+                            timing_error_m
+                        }
+                })
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(f64::INFINITY, f64::min);
+    // Stopped short of the horizon: lying still for the rest of it.
+    let still_s = horizon_s - leg.duration_s();
+    let lying = if still_s > 0.0 {
+        tracks
+            .iter()
+            .map(|track| {
+                min_distance_over(leg.end_m(), DVec2::ZERO, track, leg.duration_s(), still_s)
+                    - contact_range_m(own_length_m, track.vessel.length_m)
+            })
+            .fold(f64::INFINITY, f64::min)
+    } else {
+        f64::INFINITY
+    };
+    sailed.min(lying)
+}
+
+/// Whether `leg` keeps `constraint` along the curve sailed.
+fn leg_keeps_constraint<C: Constraint>(leg: &Leg, constraint: &C) -> bool {
+    let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
+    leg.pieces(0.0).all(|piece| {
+        let margin_m = if piece.turning {
+            piece_error_m
+        } else if piece.transient() {
+            timing_error_m
+        } else {
+            0.0
+        };
+        constraint
+            .check_segment(&Segment {
+                start_m: piece.start_m,
+                end_m: piece.end_m(),
+                margin_m,
+                start_elapsed_s: piece.elapsed_s,
+                duration_s: piece.duration_s,
+                course_rad: piece.course_rad,
+            })
+            .is_ok()
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -384,6 +403,10 @@ mod tests {
     use vorrt_jfs::TargetState;
 
     #[test]
+    #[expect(
+        clippy::float_cmp,
+        reason = "holding course returns the present course itself, unchanged"
+    )]
     fn no_target_holds_course() {
         let own = VesselState::new(DVec2::ZERO, 1.0, 6.0, 50.0);
         let problem = PlanningProblem::new(own, DVec2::new(0.0, 5000.0), vec![]);

@@ -223,7 +223,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// The distance between reference points that keeps `d_th` between the
     /// hulls of ownship and the target on `track`: `d_th` plus their contact
     /// range (half the sum of the lengths, `vorrt_colregs::rules`), so that
-    /// "d_th kept" can never be hull contact.
+    /// "`d_th` kept" can never be hull contact.
     #[must_use]
     pub fn required_distance_m(&self, track: &LinearTrack) -> f64 {
         self.config.clearance_m
@@ -277,7 +277,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             return Ok(());
         }
         let giving_way = self.acting_for_any(candidate, latches);
-        let motion = self.candidate_motion(candidate);
+        let motion = Self::candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
             let Some(latch) = latches.get(index).copied().flatten() else {
                 continue;
@@ -316,7 +316,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     }
 
     /// Ownship's motion along `candidate`, as the rule checks see it.
-    fn candidate_motion(&self, candidate: &Move) -> CandidateMotion {
+    fn candidate_motion(candidate: &Move) -> CandidateMotion {
         CandidateMotion {
             position_m: candidate.start_m,
             course_rad: candidate.course_rad,
@@ -343,7 +343,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         let to_goal_s = end_m.distance(self.goal_m) / self.ownship.speed_mps;
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
         let giving_way = self.acting_for_any(candidate, latches);
-        let motion = self.candidate_motion(candidate);
+        let motion = Self::candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
             let target_position = track.position_at(candidate.start_elapsed_s);
             let target_velocity = track.velocity_at(candidate.start_elapsed_s);

@@ -1,6 +1,6 @@
 //! Seeded sampling of 2-D points (Algorithm 2, lines 2-5).
 //!
-//! Every random choice flows from one ChaCha8 stream seeded by the caller, so
+//! Every random choice flows from one `ChaCha8` stream seeded by the caller, so
 //! the same problem and seed give a bit-identical tree.
 
 use glam::DVec2;
@@ -27,6 +27,10 @@ impl Sampler {
     }
 
     /// A uniform number in `[0, 1)` with 53 random bits.
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "2^53 and a 53-bit integer are exact in f64"
+    )]
     pub fn unit(&mut self) -> f64 {
         const SCALE: f64 = 1.0 / (1u64 << 53) as f64;
         (self.rng.next_u64() >> 11) as f64 * SCALE

@@ -213,6 +213,10 @@ enum Alterations {
 
 impl Alterations {
     /// The (alteration, speed factor) pairs, in order.
+    #[expect(
+        clippy::float_cmp,
+        reason = "picks out one exact entry of the alteration and speed tables"
+    )]
     fn order(self) -> impl Iterator<Item = (f64, f64)> {
         let resume = match self {
             Self::Resume(alteration_deg) => Some((-alteration_deg, 1.0)),
@@ -393,15 +397,15 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
                 // Holding this far is already invalid: longer holds are too.
                 break;
             }
-            let held = SimplifiedLeg {
+            let first_leg = SimplifiedLeg {
                 end_elapsed_s: hold.duration_s(),
                 leg: hold,
                 state: after,
             };
             if let Some((alter, back)) =
-                alter_hold_return(model, validator, &held, speeds, goal_m, second)
+                alter_hold_return(model, validator, &first_leg, speeds, goal_m, second)
             {
-                return Some(vec![held, alter, back]);
+                return Some(vec![first_leg, alter, back]);
             }
         }
     }
@@ -488,15 +492,12 @@ fn farthest_reachable<F: Fn(usize) -> Option<SimplifiedLeg>>(
         if probe >= unreachable {
             break;
         }
-        match attempt(probe) {
-            Some(leg) => {
-                best = (probe, leg);
-                stride *= 2;
-            }
-            None => {
-                unreachable = probe;
-                break;
-            }
+        if let Some(leg) = attempt(probe) {
+            best = (probe, leg);
+            stride *= 2;
+        } else {
+            unreachable = probe;
+            break;
         }
     }
     // Bisect between the best reachable and the nearest known unreachable.
@@ -550,6 +551,10 @@ mod tests {
     }
 
     impl MotionValidator for OnlyFarNorth {
+        #[expect(
+            clippy::float_cmp,
+            reason = "the hold is sailed at exactly the start's course and speed"
+        )]
         fn validate(
             &self,
             leg: &Leg,

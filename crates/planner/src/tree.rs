@@ -12,12 +12,13 @@ use glam::DVec2;
 use rstar::RTree;
 use rstar::primitives::GeomWithData;
 use vorrt_colregs::EncounterLatch;
+use vorrt_jfs::Pose;
 
 type IndexedPoint = GeomWithData<[f64; 2], u32>;
 
 /// Side of a cell of [`NearestIndex::Grid`], metres (16 steps of the
 /// default `d'`): of 400, 800, 1600 and 3200 m, the one whose nearest-node
-/// queries took the smallest share of the closed loop on imazu_13, 16, 17
+/// queries took the smallest share of the closed loop on `imazu_13`, 16, 17
 /// and 20 (`docs/performance.md`).
 const GRID_CELL_M: f64 = 1600.0;
 
@@ -130,8 +131,23 @@ impl Tree {
         self.positions.len()
     }
 
+    /// Where `node` lies and the course it was reached on.
+    #[must_use]
+    pub(crate) fn pose_of(&self, node: u32) -> Pose {
+        Pose {
+            position_m: self.positions[node as usize],
+            course_rad: self.courses[node as usize],
+        }
+    }
+
     /// Adds a node and returns its index; `latches` and `alterations` hold
     /// one entry per target.
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a tree holds at most 2 × MAX_NODES_PER_PHASE + 2 nodes and as many \
+                  cells, so their indices fit u32; the cell key saturates far off, \
+                  and a cell keeps its own exact box"
+    )]
     pub(crate) fn push(
         &mut self,
         position_m: DVec2,
@@ -211,6 +227,10 @@ impl Tree {
     /// The node nearest to `point_m` (Algorithm 2, `getClosestNode`); ties go
     /// to the older node. `None` only for an empty tree.
     #[must_use]
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a tree holds at most 2 × MAX_NODES_PER_PHASE + 2 nodes, so node indices fit u32"
+    )]
     pub(crate) fn nearest(&self, point_m: DVec2) -> Option<u32> {
         match self.index {
             NearestIndex::Linear => {
@@ -238,6 +258,10 @@ impl Tree {
     /// cell whose box is no farther than the best node so far, comparing
     /// (distance, index) so that ties go to the older node in any order of
     /// visit. A cell skipped lies wholly farther than that node.
+    #[expect(
+        clippy::float_cmp,
+        reason = "an exact tie in distance goes to the older node, as in the linear scan"
+    )]
     fn nearest_in_grid(&self, point_m: DVec2) -> Option<u32> {
         let first = self
             .cells
@@ -269,6 +293,10 @@ impl Tree {
     /// [`nearest`](Self::nearest) when no node faces the point. Ties go to the
     /// older node, whichever index is used.
     #[must_use]
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a tree holds at most 2 × MAX_NODES_PER_PHASE + 2 nodes, so node indices fit u32"
+    )]
     pub(crate) fn nearest_facing(&self, point_m: DVec2, min_cos: f64) -> Option<u32> {
         let faces = |index: usize| {
             faces(
@@ -372,6 +400,10 @@ mod tests {
     }
 
     #[test]
+    #[expect(
+        clippy::float_cmp,
+        reason = "both indices must find a node at exactly the nearest distance"
+    )]
     fn linear_and_rtree_agree() {
         let mut linear = Tree::default();
         let mut indexed = Tree::default();

@@ -318,7 +318,7 @@ pub fn check_legs_with<C: Constraint>(
     let tracks: Vec<LinearTrack> = problem
         .targets
         .iter()
-        .map(|target| target.track())
+        .map(vorrt_jfs::TargetState::track)
         .collect();
     let checker = SafetyChecker::new(
         config,

@@ -48,6 +48,12 @@ impl Constraint for NoGoCircle {
 /// The smallest distance from the circle's centre to ownship along `plan`,
 /// sampled every second (a piece of a turn is never longer than a few
 /// seconds' sailing), less the radius: negative inside.
+#[expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    clippy::cast_precision_loss,
+    reason = "a plan's duration is finite and positive, a few thousand seconds"
+)]
 fn least_clearance_m(plan: &vorrt_planner::Plan, circle: &NoGoCircle) -> f64 {
     let start_s = plan.waypoints[0].time_s;
     let steps = plan.duration_s().ceil() as usize;

@@ -3,7 +3,7 @@
 //! a weaker level of the graded fallback judges a leg as a stricter one
 //! does unless the stricter one refused it for a duty the weaker one drops
 //! (`Compliance::checks`), and a leg valid at a wider clearance is valid at
-//! d_th.
+//! `d_th`.
 
 use glam::DVec2;
 use proptest::prelude::*;

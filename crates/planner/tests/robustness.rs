@@ -236,6 +236,10 @@ proptest! {
 #[test]
 fn many_targets_plan_within_the_budget() {
     let own = VesselState::new(DVec2::new(0.0, -3000.0), 0.0, 6.0, 100.0);
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a target's index, below MAX_TARGETS"
+    )]
     let targets: Vec<TargetState> = (0..vorrt_planner::problem::MAX_TARGETS)
         .map(|index| {
             let angle = index as f64 * 0.37;
@@ -272,7 +276,7 @@ fn largest_configuration_with_a_budget_returns() {
     let targets = (0..8)
         .map(|index| {
             TargetState::constant_velocity(VesselState::new(
-                DVec2::new(300.0 * index as f64 - 1200.0, 0.0),
+                DVec2::new(300.0 * f64::from(index) - 1200.0, 0.0),
                 0.0,
                 0.0,
                 50.0,

@@ -3,9 +3,9 @@
 //! force, and the action taken in it (see the measurement list in the
 //! [module documentation](super)).
 
+use super::episodes::turn_episodes;
 use super::{EncounterSample, ScoringParameters};
 use crate::latch::{EncounterLatch, has_passed};
-use crate::observed::turn_episodes;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{

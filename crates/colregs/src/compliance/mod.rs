@@ -122,6 +122,7 @@
 //!   compliant encounter gives 1.
 
 mod assessment;
+pub(crate) mod episodes;
 mod judge;
 pub(crate) mod measure;
 mod recording;

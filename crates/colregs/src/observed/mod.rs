@@ -146,7 +146,6 @@
 //! assert_eq!(judgement.path.turn_reversals, 0);
 //! ```
 
-mod episodes;
 mod judge;
 mod observe;
 mod parameters;
@@ -155,7 +154,7 @@ mod recording;
 #[cfg(test)]
 mod tests;
 
-pub use episodes::{TurnEpisode, turn_episodes, turn_reversals};
+pub use crate::compliance::episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
 pub use observe::{OverGround, over_ground, over_ground_from};
 pub use parameters::ObservedParameters;

@@ -2,7 +2,7 @@
 //! its turn, how much it turns per mile (see the [module
 //! documentation](super), "Path quality").
 
-use super::episodes::turn_reversals;
+use crate::compliance::episodes::turn_reversals;
 use crate::parameters::RuleParameters;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};

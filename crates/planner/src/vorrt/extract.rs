@@ -4,7 +4,7 @@
 //! The order in which the planner looks for a plan is one value,
 //! [`ROOT_LADDER`]: each manoeuvre shape (one alteration held, then two:
 //! decisions 14 and 27 in `docs/decisions/`), each first at the preferred
-//! clearance and then at d_th (decision 23); the first rung that finds a
+//! clearance and then at `d_th` (decision 23); the first rung that finds a
 //! plan wins. Only when no rung does is a tree grown (decision 14), and its
 //! branch simplified by the same validity check. The compliance levels of
 //! the graded fallback (decision 17) are the ladder's outer dimension,
@@ -12,7 +12,7 @@
 //! which skips a level that would only repeat a failed search
 //! ([`Planner::would_repeat`]).
 //!
-//! A leg valid at the preferred clearance is valid at d_th, so of the two
+//! A leg valid at the preferred clearance is valid at `d_th`, so of the two
 //! clearances of one shape the preferred one wins whenever either finds a
 //! plan, whichever is asked first; [`Probe`] says which is asked first, to
 //! spare the search likelier to be wasted (decision 26). The plans are the
@@ -46,9 +46,9 @@ pub enum ManeuverShape {
 /// The clearance a rung is searched at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ClearanceLevel {
-    /// d_th times `PlannerConfig::preferred_clearance_factor`: where sea room allows.
+    /// `d_th` times `PlannerConfig::preferred_clearance_factor`: where sea room allows.
     Preferred,
-    /// d_th itself.
+    /// `d_th` itself.
     Floor,
 }
 
@@ -86,18 +86,18 @@ pub const ROOT_LADDER: [Rung; 4] = [
 /// same either way (module documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Probe {
-    /// The preferred clearance first: spares the search at d_th where most
+    /// The preferred clearance first: spares the search at `d_th` where most
     /// searches succeed (a first call).
     PreferredFirst,
-    /// d_th first: spares the wider search where most fail (a retry), since
-    /// nothing is valid wider when nothing is valid at d_th.
+    /// `d_th` first: spares the wider search where most fail (a retry), since
+    /// nothing is valid wider when nothing is valid at `d_th`.
     FloorFirst,
 }
 
 /// Climbs `ladder` with `search`, asking the clearances of each shape in
 /// the order `probe` says, and returns what the highest rung that finds
 /// something found. With `preferred` false (a preferred clearance no wider
-/// than d_th) only the d_th rungs are asked.
+/// than `d_th`) only the `d_th` rungs are asked.
 fn climb<T>(
     ladder: &[Rung],
     probe: Probe,
@@ -179,7 +179,7 @@ impl<C: Constraint> Planner<C> {
         &self,
         problem: &PlanningProblem,
         sailing: &Sailing,
-        model: &RateLimitedTurn,
+        model: RateLimitedTurn,
         config: &PlannerConfig,
         shape: ManeuverShape,
         points: &[DVec2],
@@ -206,7 +206,7 @@ impl<C: Constraint> Planner<C> {
         };
         let legs = match shape {
             ManeuverShape::TwoAlterations => hold_then_alter(
-                model,
+                &model,
                 &recording,
                 start,
                 sailing.speeds,
@@ -214,7 +214,7 @@ impl<C: Constraint> Planner<C> {
                 &root,
             ),
             ManeuverShape::OneAlteration => simplify_after(
-                model,
+                &model,
                 &recording,
                 start,
                 sailing.speeds,
@@ -240,7 +240,7 @@ impl<C: Constraint> Planner<C> {
     ) -> Option<Plan> {
         let sailing = self.sailing(problem);
         let model = sailing.model?;
-        // Where sea room allows, the manoeuvre passes wider than d_th
+        // Where sea room allows, the manoeuvre passes wider than `d_th`
         // (PlannerConfig::preferred_clearance_factor); the same validator
         // judges it, with the wider clearance.
         let preferred = PlannerConfig {
@@ -258,7 +258,7 @@ impl<C: Constraint> Planner<C> {
                     ClearanceLevel::Floor => &self.config,
                 };
                 self.search_legs(
-                    problem, &sailing, &model, config, rung.shape, &goal, false, refused,
+                    problem, &sailing, model, config, rung.shape, &goal, false, refused,
                 )
             },
         )?;
@@ -267,7 +267,7 @@ impl<C: Constraint> Planner<C> {
 
     /// The plan along the tree's branch to `node`: the branch itself for
     /// instantaneous turns, else its simplification into sailable legs at
-    /// d_th (`None` when there is none), every leg refused counted in
+    /// `d_th` (`None` when there is none), every leg refused counted in
     /// `refused`. With `root_searched`, the search from the root is known
     /// to have failed, so the simplification does not ask it again.
     pub(super) fn extract_branch(
@@ -288,7 +288,7 @@ impl<C: Constraint> Planner<C> {
         }
         let sailing = self.sailing(problem);
         let branch = self.tree.branch(node);
-        let legs = match &sailing.model {
+        let legs = match sailing.model {
             None => self.branch_legs(problem, &sailing, &branch),
             Some(model) => {
                 let points: Vec<DVec2> = branch[1..]

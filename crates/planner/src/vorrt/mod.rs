@@ -29,7 +29,7 @@ use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
-use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, Pose};
+use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, TargetState};
 
 mod extract;
 
@@ -149,7 +149,7 @@ impl<C: Constraint> Planner<C> {
     }
 
     /// Plans a safe, COLREGs-compliant path for `problem`, drawing every
-    /// random choice from a ChaCha8 stream seeded with `seed`.
+    /// random choice from a `ChaCha8` stream seeded with `seed`.
     ///
     /// # Errors
     /// [`PlannerError::InvalidProblem`] for a malformed problem,
@@ -230,34 +230,9 @@ impl<C: Constraint> Planner<C> {
         let own = problem.ownship;
         self.tracks.clear();
         self.tracks
-            .extend(problem.targets.iter().map(|target| target.track()));
+            .extend(problem.targets.iter().map(TargetState::track));
         let targets = self.tracks.len();
-        let root_latches: Vec<Option<EncounterLatch>> = (0..targets)
-            .map(|index| {
-                let previous = problem.encounters.get(index).copied().flatten();
-                update_latch(
-                    previous,
-                    &own,
-                    &self.tracks[index].state_at(0.0),
-                    problem.start_time_s,
-                    &config.rules,
-                )
-            })
-            .collect();
-        // The alteration already made for an encounter carried over from a
-        // previous plan (a closed loop passes it), else none.
-        let root_alterations: Vec<f64> = (0..targets)
-            .map(|index| {
-                let carried = problem.encounters.get(index).copied().flatten();
-                match (carried, root_latches[index]) {
-                    (Some(was), Some(now)) if was == now => {
-                        problem.alterations.get(index).copied().unwrap_or(0.0)
-                    }
-                    _ => 0.0,
-                }
-            })
-            .collect();
-
+        let (root_latches, root_alterations) = self.root_encounters(problem);
         let margin = DVec2::splat(config.sampling_margin_m);
         let mut sampler = Sampler::new(
             seed,
@@ -306,24 +281,7 @@ impl<C: Constraint> Planner<C> {
             let reached = if own.position_m == problem.goal_m {
                 Some(0)
             } else {
-                let mut found = None;
-                let phases = match effort {
-                    SearchEffort::Full => 2,
-                    SearchEffort::FirstPhase => 1,
-                };
-                for goal_bias in [config.goal_bias, config.phase_two_goal_bias]
-                    .into_iter()
-                    .take(phases)
-                {
-                    match self.grow(problem, &mut sampler, goal_bias, &mut statistics, started)? {
-                        Growth::Reached(node) => {
-                            found = Some(node);
-                            break;
-                        }
-                        Growth::Exhausted => {}
-                    }
-                }
-                found
+                self.grow_phases(problem, &mut sampler, effort, &mut statistics, started)?
             };
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
@@ -343,6 +301,69 @@ impl<C: Constraint> Planner<C> {
         Err(PlannerError::NoSafePath {
             statistics: Box::new(statistics),
         })
+    }
+
+    /// The encounters in force at the root, each updated from the one a
+    /// previous plan carried over (a closed loop passes them), and the
+    /// alteration already made for each.
+    fn root_encounters(
+        &self,
+        problem: &PlanningProblem,
+    ) -> (Vec<Option<EncounterLatch>>, Vec<f64>) {
+        let root_latches: Vec<Option<EncounterLatch>> = (0..self.tracks.len())
+            .map(|index| {
+                let previous = problem.encounters.get(index).copied().flatten();
+                update_latch(
+                    previous,
+                    &problem.ownship,
+                    &self.tracks[index].state_at(0.0),
+                    problem.start_time_s,
+                    &self.config.rules,
+                )
+            })
+            .collect();
+        // The alteration already made for an encounter carried over from a
+        // previous plan (a closed loop passes it), else none.
+        let root_alterations: Vec<f64> = (0..self.tracks.len())
+            .map(|index| {
+                let carried = problem.encounters.get(index).copied().flatten();
+                match (carried, root_latches[index]) {
+                    (Some(was), Some(now)) if was == now => {
+                        problem.alterations.get(index).copied().unwrap_or(0.0)
+                    }
+                    _ => 0.0,
+                }
+            })
+            .collect();
+        (root_latches, root_alterations)
+    }
+
+    /// The phases `effort` asks for (the second with its own goal bias),
+    /// each growing the tree until the goal is reached: the goal's node, or
+    /// `None` when every phase was spent first.
+    fn grow_phases(
+        &mut self,
+        problem: &PlanningProblem,
+        sampler: &mut Sampler,
+        effort: SearchEffort,
+        statistics: &mut PlanStatistics,
+        started: Instant,
+    ) -> Result<Option<u32>, PlannerError> {
+        let phases = match effort {
+            SearchEffort::Full => 2,
+            SearchEffort::FirstPhase => 1,
+        };
+        for goal_bias in [self.config.goal_bias, self.config.phase_two_goal_bias]
+            .into_iter()
+            .take(phases)
+        {
+            if let Growth::Reached(node) =
+                self.grow(problem, sampler, goal_bias, statistics, started)?
+            {
+                return Ok(Some(node));
+            }
+        }
+        Ok(None)
     }
 
     /// One phase of Algorithm 2: grow until the goal is reached, the phase's
@@ -372,21 +393,11 @@ impl<C: Constraint> Planner<C> {
             max_turn_rad: config.max_turn_per_step_rad,
         };
         let mut accepted = 0usize;
-        let mut samples = 0usize;
-        while accepted < config.nodes_per_phase && samples < config.samples_per_phase {
-            samples += 1;
+        let mut samples_drawn = 0usize;
+        while accepted < config.nodes_per_phase && samples_drawn < config.samples_per_phase {
+            samples_drawn += 1;
             statistics.samples += 1;
-            if let Some(budget_s) = config.time_budget_s
-                && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
-                && started.elapsed().as_secs_f64() > budget_s
-            {
-                statistics.nodes = self.tree.len() as u64;
-                statistics.elapsed_s = started.elapsed().as_secs_f64();
-                return Err(PlannerError::BudgetExhausted {
-                    budget_s,
-                    statistics: Box::new(*statistics),
-                });
-            }
+            check_time_budget(&config, statistics, started, &self.tree)?;
             let sample = sampler.sample(problem.goal_m, goal_bias);
             // Only where the user's constraint admits a point (in water).
             if sample != problem.goal_m && !self.constraint.admits_point(sample) {
@@ -410,10 +421,7 @@ impl<C: Constraint> Planner<C> {
                 statistics.rejections.record(cause);
                 continue;
             }
-            let from = Pose {
-                position_m: self.tree.positions[parent as usize],
-                course_rad: self.tree.courses[parent as usize],
-            };
+            let from = self.tree.pose_of(parent);
             let Some(leg) = model.steer(from, sample, own.speed_mps, config.step_m) else {
                 continue;
             };
@@ -443,36 +451,84 @@ impl<C: Constraint> Planner<C> {
             if to_goal == 0.0 {
                 return Ok(Growth::Reached(node));
             }
-            if to_goal <= config.goal_tolerance_m {
-                // The final segment onto the goal, checked like any other.
-                let final_leg = Leg::straight(
-                    position,
-                    angle::unit_to_course(problem.goal_m - position),
-                    to_goal,
+            if to_goal <= config.goal_tolerance_m
+                && let Some(goal) = close_onto_goal(
+                    &mut self.tree,
+                    &mut self.scratch,
+                    &checker,
+                    problem,
+                    node,
                     own.speed_mps,
-                );
-                let final_elapsed_s = self.tree.times[node as usize] - problem.start_time_s;
-                self.scratch
-                    .set(self.tree.latches_of(node), self.tree.alterations_of(node));
-                match checker.validate(&final_leg, final_elapsed_s, &mut self.scratch) {
-                    Ok(()) => {
-                        // Exactly on the goal, whatever the rounding of
-                        // start + velocity × duration.
-                        let goal = self.tree.push(
-                            problem.goal_m,
-                            final_leg.course_rad,
-                            problem.start_time_s + final_elapsed_s + final_leg.duration_s(),
-                            node,
-                            &self.scratch.latches,
-                            &self.scratch.alterations,
-                        );
-                        return Ok(Growth::Reached(goal));
-                    }
-                    Err(cause) => statistics.rejections.record(cause),
-                }
+                    &mut statistics.rejections,
+                )
+            {
+                return Ok(Growth::Reached(goal));
             }
         }
         Ok(Growth::Exhausted)
+    }
+}
+
+/// Once the clock, read every [`CLOCK_EVERY_SAMPLES`] samples, passes the
+/// configured time budget: [`PlannerError::BudgetExhausted`] with the
+/// statistics so far, `tree` counted as grown.
+fn check_time_budget(
+    config: &PlannerConfig,
+    statistics: &mut PlanStatistics,
+    started: Instant,
+    tree: &Tree,
+) -> Result<(), PlannerError> {
+    if let Some(budget_s) = config.time_budget_s
+        && statistics.samples.is_multiple_of(CLOCK_EVERY_SAMPLES)
+        && started.elapsed().as_secs_f64() > budget_s
+    {
+        statistics.nodes = tree.len() as u64;
+        statistics.elapsed_s = started.elapsed().as_secs_f64();
+        return Err(PlannerError::BudgetExhausted {
+            budget_s,
+            statistics: Box::new(*statistics),
+        });
+    }
+    Ok(())
+}
+
+/// The final segment from `node`, within `goal_tolerance_m` of the goal,
+/// onto the goal, checked like any other move: the goal's node when the
+/// segment is valid, else `None` with its cause counted in `rejections`.
+fn close_onto_goal<V: MotionValidator>(
+    tree: &mut Tree,
+    scratch: &mut EncounterState,
+    checker: &V,
+    problem: &PlanningProblem,
+    node: u32,
+    speed_mps: f64,
+    rejections: &mut RejectionCounts,
+) -> Option<u32> {
+    let position = tree.positions[node as usize];
+    let to_goal = position.distance(problem.goal_m);
+    let final_leg = Leg::straight(
+        position,
+        angle::unit_to_course(problem.goal_m - position),
+        to_goal,
+        speed_mps,
+    );
+    let final_elapsed_s = tree.times[node as usize] - problem.start_time_s;
+    scratch.set(tree.latches_of(node), tree.alterations_of(node));
+    match checker.validate(&final_leg, final_elapsed_s, scratch) {
+        // Exactly on the goal, whatever the rounding of start + velocity ×
+        // duration.
+        Ok(()) => Some(tree.push(
+            problem.goal_m,
+            final_leg.course_rad,
+            problem.start_time_s + final_elapsed_s + final_leg.duration_s(),
+            node,
+            &scratch.latches,
+            &scratch.alterations,
+        )),
+        Err(cause) => {
+            rejections.record(cause);
+            None
+        }
     }
 }
 
@@ -484,6 +540,12 @@ mod tests {
 
     /// The smallest distance between hulls along `plan`, sampled every 2 s,
     /// to a target on `track`.
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        clippy::cast_precision_loss,
+        reason = "a plan's duration is finite and positive, a few thousand 2 s steps"
+    )]
     fn min_hull_distance_m(plan: &Plan, track: &LinearTrack, own_length_m: f64) -> f64 {
         let contact_m = vorrt_colregs::rules::contact_range_m(own_length_m, track.vessel.length_m);
         let steps = (plan.duration_s() / 2.0).ceil() as usize;

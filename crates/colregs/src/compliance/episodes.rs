@@ -1,6 +1,9 @@
 //! Turn episodes of a course series: the runs of same-direction course
 //! change that an observer counts as one alteration (see the [module
-//! documentation](super), "Turn episodes").
+//! documentation](crate::observed), "Turn episodes"). Here, below both their
+//! users, so that the scoring (rule 8(b)'s small alterations) and the
+//! judgement as observed (path quality) share them without depending on
+//! each other; public as [`crate::observed`]'s.
 
 use crate::parameters::RuleParameters;
 use crate::rules::is_detectable_turn;
