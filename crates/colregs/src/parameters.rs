@@ -1,7 +1,6 @@
 //! The constants of the COLREGs geometry, as one documented parameter set.
 //!
-//! Defaults follow the values used in the field (`docs/architecture.md`,
-//! "Decisions on the paper's errata"); each can be changed, and [`RuleParameters::validate`] says which
+//! Defaults follow the values used in the field (`docs/decisions/README.md`); each can be changed, and [`RuleParameters::validate`] says which
 //! value is out of range.
 
 use crate::error::ColregsError;

@@ -33,7 +33,7 @@
 //! are in contact when their centres are closer than the sum of the radii,
 //! `distance < (length_a + length_b) / 2` ([`in_contact`]). This is the only
 //! definition of collision in the workspace. The velocity obstacle's disc of
-//! radius `length_a + length_b` (`docs/architecture.md`, decision 3) is a
+//! radius `length_a + length_b` (`docs/decisions/0003-vo-disc-radius-vs-d-th.md`) is a
 //! safety margin the planner keeps, not a collision test; the clearance
 //! `d_th` is the distance the planner and the scoring require, also not a
 //! collision test.
@@ -102,7 +102,7 @@ pub const STEADY_COURSE_WINDOW_S: f64 = 60.0;
 
 /// The rate of course change above which ownship counts as turning when its
 /// steady course is sought ([`steady_course_rad`]), rad/s (3° a minute): well
-/// under the rates ships alter course at (0.2-0.5°/s, `docs/architecture.md`)
+/// under the rates ships alter course at (0.2-0.5°/s, `docs/decisions/0013-rate-of-turn.md`)
 /// and above the wander of a course held.
 pub const STEADY_TURN_RATE_RAD_S: f64 = 0.05 * std::f64::consts::PI / 180.0;
 
@@ -545,7 +545,7 @@ pub fn in_contact(distance_m: f64, length_a_m: f64, length_b_m: f64) -> bool {
 /// reference positions `distance_m` apart, keep the clearance `clearance_m`
 /// (`d_th`) between their hulls: `distance_m - contact_range_m(..) >= clearance_m`.
 /// The planner keeps its reference points that far apart, so "`d_th` kept" is
-/// never hull contact (`docs/architecture.md`).
+/// never hull contact (`docs/decisions/0016-clearance-between-hulls.md`).
 ///
 /// ```
 /// use vorrt_colregs::rules::keeps_clearance;

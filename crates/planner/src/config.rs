@@ -18,7 +18,7 @@ pub enum NearestIndex {
     /// The default: the nodes binned in square cells of 1600 m with their
     /// bounding boxes; a query scans the cells that can hold a node nearer
     /// than the best so far. Same answer as `Linear`, ties included (see
-    /// `docs/performance.md`, "2026-11-30: cheaper retries, a grid nearest-node
+    /// `docs/history/performance.md`, "2026-11-30: cheaper retries, a grid nearest-node
     /// index").
     #[default]
     Grid,
@@ -147,7 +147,7 @@ impl Compliance {
 ///
 /// A closed loop retrying for a fully compliant plan while it sails a
 /// fallback plan asks again every few seconds, so each retry is one more
-/// draw: measured on the closed loop (`docs/performance.md`, "2026-11-30:
+/// draw: measured on the closed loop (`docs/history/performance.md`, "2026-11-30:
 /// cheaper retries, a grid nearest-node index"), 14 % of the successful attempts succeed in phase 2 while
 /// phase 2 draws half the samples of an attempt that fails, on the larger
 /// tree (dearer nearest-node scans). `FirstPhase` keeps the restarts.

@@ -19,7 +19,7 @@ type IndexedPoint = GeomWithData<[f64; 2], u32>;
 /// Side of a cell of [`NearestIndex::Grid`], metres (16 steps of the
 /// default `d'`): of 400, 800, 1600 and 3200 m, the one whose nearest-node
 /// queries took the smallest share of the closed loop on `imazu_13`, 16, 17
-/// and 20 (`docs/performance.md`).
+/// and 20 (`docs/history/performance.md`).
 const GRID_CELL_M: f64 = 1600.0;
 
 /// The nodes that fall in one cell of the grid, with their bounding box.

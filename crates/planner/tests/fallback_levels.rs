@@ -1,5 +1,5 @@
 //! The premises of two shortcuts that must not change a verdict
-//! (`docs/architecture.md`, the decision on searches that repeat nothing):
+//! (`docs/decisions/0026-searches-that-repeat-nothing.md`):
 //! a weaker level of the graded fallback judges a leg as a stricter one
 //! does unless the stricter one refused it for a duty the weaker one drops
 //! (`Compliance::checks`), and a leg valid at a wider clearance is valid at

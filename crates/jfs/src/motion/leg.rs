@@ -13,8 +13,7 @@ pub(super) const SAME_POINT_M: f64 = 1e-9;
 
 /// A change of speed along a leg: the leg starts at `start_speed_mps` and
 /// changes speed at `rate_mps2` (either way) until it reaches the leg's
-/// settled [`speed_mps`](Leg::speed_mps), then holds it (`docs/architecture.md`,
-/// decision 19: a constant rate, from the stopping distance).
+/// settled [`speed_mps`](Leg::speed_mps), then holds it (`docs/decisions/0019-speed-as-a-manoeuvre.md`: a constant rate, from the stopping distance).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SpeedChange {
     /// Speed at the leg's start, m/s (at least 0).

@@ -19,7 +19,7 @@
 //!   point with its rudder at the limit until it faces it.
 //!
 //! The default rate of turn comes from the vessel's length and speed
-//! ([`default_turn_rate_rad_s`]); `docs/architecture.md` gives the sources.
+//! ([`default_turn_rate_rad_s`]); `docs/decisions/0013-rate-of-turn.md` gives the sources.
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -69,7 +69,7 @@ pub const STOPPING_REACH_LENGTHS: f64 = 15.0;
 /// `speed_mps` changes speed, m/s² (slowing down or speeding up): the
 /// constant deceleration that stops it from that speed in
 /// [`STOPPING_REACH_LENGTHS`] lengths, `v² / (2 · 15 L)`.
-/// `docs/architecture.md` (decision 19) gives the sources.
+/// `docs/decisions/0019-speed-as-a-manoeuvre.md` gives the sources.
 ///
 /// ```
 /// use vorrt_jfs::motion::default_speed_change_mps2;
