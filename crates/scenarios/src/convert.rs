@@ -18,8 +18,8 @@ fn from_nm((east, north): (f64, f64)) -> DVec2 {
     )
 }
 
-fn either_m(in_nm: Option<(f64, f64)>, in_m: Option<(f64, f64)>) -> Option<DVec2> {
-    in_nm.map(from_nm).or(in_m.map(DVec2::from))
+fn either_m(nautical: Option<(f64, f64)>, metres: Option<(f64, f64)>) -> Option<DVec2> {
+    nautical.map(from_nm).or(metres.map(DVec2::from))
 }
 
 impl VesselSpec {

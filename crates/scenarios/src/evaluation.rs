@@ -15,7 +15,7 @@
 //! is judged on clearance alone. Definitions and parameters are in
 //! `docs/evaluation.md`, "Judging the track as observed".
 //!
-//! The clearance d_th and the rule constants are those the run was made
+//! The clearance `d_th` and the rule constants are those the run was made
 //! with (`SimulationRecord::config`), and the rate-of-turn limit is the one
 //! ownship sailed under (`SimulationRecord::max_turn_rate_rad_s`).
 //!
@@ -81,6 +81,10 @@ pub struct TargetEvaluation {
 
 /// How a whole run fared.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "a plain record of documented outcome flags"
+)]
 pub struct Evaluation {
     /// The scenario's name.
     pub scenario: String,

@@ -144,7 +144,7 @@ mod tests {
                         .to_string_lossy()
                         .into_owned()
                 })
-                .filter(|name| name.ends_with(".ron"))
+                .filter(|name| Path::new(name).extension().is_some_and(|ext| ext == "ron"))
                 .collect();
             files.sort();
             for file in files {

@@ -57,7 +57,7 @@ impl Scenario {
         deserializer
             .end()
             .map_err(|error| syntax(deserializer.span_error(error), None))?;
-        scenario.source = source.to_owned();
+        source.clone_into(&mut scenario.source);
         scenario.validate()?;
         Ok(scenario)
     }

@@ -281,8 +281,8 @@ pub(crate) fn describe_config_error(error: &PlannerError) -> (String, String) {
             field,
             value,
             expected,
-        } => (field, *value, expected),
-        PlannerError::InvalidRules(vorrt_colregs::ColregsError::InvalidParameter {
+        }
+        | PlannerError::InvalidRules(vorrt_colregs::ColregsError::InvalidParameter {
             field,
             value,
             expected,
@@ -344,6 +344,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn every_field_maps_to_si() {
         let settings = PlannerSettings {
             clearance_m: Some(100.0),

@@ -129,10 +129,10 @@ impl Scenario {
                 "are given in a geographic scenario: traffic lanes are only supported in local scenarios (start_nm/start_m)".into(),
             ));
         }
-        project_vessel(&mut self.ownship, "ownship".into(), frame.as_ref())?;
+        project_vessel(&mut self.ownship, "ownship", frame.as_ref())?;
         for (index, target) in self.targets.iter_mut().enumerate() {
             let who = format!("targets[{index}] {:?}", target.name);
-            project_vessel(target, who, frame.as_ref())?;
+            project_vessel(target, &who, frame.as_ref())?;
         }
         Ok(())
     }
@@ -142,7 +142,7 @@ impl Scenario {
 /// or checks that a local scenario's vessel has none.
 fn project_vessel(
     vessel: &mut VesselSpec,
-    who: String,
+    who: &str,
     frame: Option<&LocalFrame>,
 ) -> Result<(), (String, String)> {
     let field = |name: &str| format!("{who}.{name}");
@@ -343,7 +343,7 @@ pub enum Behaviour {
     /// course and speed wandering about the nominal: each is offset by a
     /// mean-reverting random walk (Ornstein-Uhlenbeck, time constant
     /// [`NOISE_TIME_CONSTANT_S`]) whose standard deviation is the given sigma.
-    /// The noise comes from a ChaCha8 stream per target derived from the run
+    /// The noise comes from a `ChaCha8` stream per target derived from the run
     /// seed, so a run is reproducible.
     Noisy {
         /// Standard deviation of the course offset, degrees (≥ 0).
@@ -406,6 +406,10 @@ impl Behaviour {
                 return Err((field, format!("is {value}, not a finite number")));
             }
             if !(low..=high).contains(&value) {
+                #[expect(
+                    clippy::float_cmp,
+                    reason = "`f64::MAX` is the exact no-upper-bound sentinel"
+                )]
                 let range = if high == f64::MAX {
                     format!("at least {low}")
                 } else {

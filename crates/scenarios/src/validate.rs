@@ -484,6 +484,7 @@ mod tests {
     use super::*;
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn courses_normalise_into_range() {
         assert_eq!(normalise_course_deg(-90.0), 270.0);
         assert_eq!(normalise_course_deg(360.0), 0.0);

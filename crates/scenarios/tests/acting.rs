@@ -70,7 +70,7 @@ fn evasive_manoeuvre_is_held_while_overtaken_by_a_wandering_vessel() {
 /// Run 283 of the campaign with 8 COLREGs-obeying targets (seed 11): TS5
 /// overtakes ownship on its avoiding course, 35° to starboard, and once
 /// past steers back for its destination across ownship's bow. Predicted on
-/// its avoiding course for ever, it came within 198 m of ownship (d_th
+/// its avoiding course for ever, it came within 198 m of ownship (`d_th`
 /// broken between the hulls); predicted to return to its route once past
 /// (`holding_course_then_toward_goal`), it is kept clear of.
 #[test]
@@ -116,7 +116,7 @@ fn a_return_foreseen_after_the_last_plan_is_planned_for() {
 /// run of its 1000 that ended in hull contact: a vessel from the quarter on
 /// nearly the same course, overtaking, while most replans failed. With the
 /// overtaking vessels' return to their routes foreseen, every plan succeeds
-/// and d_th is kept.
+/// and `d_th` is kept.
 #[test]
 fn sixteen_acting_vessels_of_run_511_are_kept_clear_of() {
     let spec = OpenSeaSpec::with_targets(16).with_behaviour(TargetBehaviour::Colregs);

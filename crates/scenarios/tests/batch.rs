@@ -47,7 +47,7 @@ fn check_sharding(spec: &GeneratorSpec, seed: u64, count: u64) {
     assert_eq!(halves[0].len() + halves[1].len(), whole.len());
     for half in &halves {
         for item in half {
-            assert_eq!(&whole[item.index as usize], item);
+            assert_eq!(&whole[usize::try_from(item.index).unwrap()], item);
         }
     }
     let whole_rows = run_batch(&whole, &|_, _| {});
@@ -112,6 +112,7 @@ fn csv_round_trip_keeps_every_value() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn progress_is_reported_for_every_run() {
     let spec = GeneratorSpec::Tss(TssSpec::with_density(0.5));
     let items = generate_items(&spec, 2, 3, Shard::ALL).unwrap();

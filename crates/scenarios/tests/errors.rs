@@ -274,6 +274,7 @@ fn bad_simulation_settings_are_rejected() {
 }
 
 #[test]
+#[expect(clippy::cast_precision_loss, reason = "target indices, far below 2^52")]
 fn too_many_targets_are_rejected() {
     let target = |i: usize| {
         format!(
@@ -296,6 +297,7 @@ fn absurd_magnitudes_are_rejected() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn out_of_range_courses_are_normalised() {
     let text = with("course_deg: 270.0", "course_deg: -90.0");
     let text = text.replacen("course_deg: 90.0", "course_deg: 810.0", 1);

@@ -75,6 +75,7 @@ fn every_fixture_round_trips_through_ron() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn every_fixture_is_fully_specified() {
     for (path, scenario) in all_fixtures() {
         let path = path.display();
@@ -104,6 +105,7 @@ fn every_fixture_is_fully_specified() {
 }
 
 #[test]
+#[expect(clippy::cast_precision_loss, reason = "a node count, far below 2^52")]
 fn paper_fixtures_are_sized_as_promised() {
     for (path, scenario) in load_dir(&dir("paper")).expect("paper") {
         let path = path.display();
@@ -120,6 +122,7 @@ fn paper_fixtures_are_sized_as_promised() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn two_vessel_paper_fixtures_collide_if_ownship_holds_course() {
     for name in ["crossing", "head_on", "overtaking"] {
         let scenario = paper(name);
@@ -145,6 +148,7 @@ fn multi_vessel_has_three_targets_on_collision_courses() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn tss_fixture_is_a_busy_westbound_lane() {
     let scenario = paper("tss");
     let config = scenario.planner_config().expect("config");
@@ -181,6 +185,7 @@ fn tss_fixture_is_a_busy_westbound_lane() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn conversion_to_planning_problem_is_in_si() {
     let scenario = paper("crossing");
     let problem = scenario.planning_problem();

@@ -16,7 +16,7 @@ fn round_trips(scenario: &Scenario) {
 }
 
 /// The encounter type a generated open-sea target was drawn as, from the
-/// scenario's description ("TS3 head_on").
+/// scenario's description (`"TS3 head_on"`).
 fn intended(scenario: &Scenario, number: usize) -> Encounter {
     let description = scenario.description.as_deref().unwrap();
     let key = format!("TS{} ", number + 1);
@@ -32,6 +32,7 @@ fn intended(scenario: &Scenario, number: usize) -> Encounter {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn open_sea_targets_have_risk_of_the_intended_type() {
     let rules = RuleParameters::default();
     for targets in [1, 2, 5, 16] {
@@ -162,6 +163,7 @@ fn impossible_placement_is_an_error() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn tss_scenarios_are_valid_and_dense_as_asked() {
     for direction in [
         TssDirection::Westbound,
@@ -207,6 +209,7 @@ fn tss_scenarios_are_valid_and_dense_as_asked() {
 fn planner_section_is_sized_to_the_route() {
     let scenario = open_sea(&OpenSeaSpec::with_targets(2), 1, 0).unwrap();
     let route_m = scenario.ownship_goal_m().length();
+    #[expect(clippy::cast_precision_loss, reason = "a node count, far below 2^52")]
     let nodes = scenario.planner.nodes_per_phase.unwrap() as f64;
     assert!(
         (nodes - 5.0 * route_m / 100.0).abs() <= 1.0,

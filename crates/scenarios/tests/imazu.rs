@@ -64,6 +64,7 @@ fn case(number: usize) -> Scenario {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn every_case_matches_the_table() {
     for (index, targets) in TABLE.iter().enumerate() {
         let number = index + 1;
@@ -115,6 +116,7 @@ fn every_target_passes_the_origin_at_thirty_minutes() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn spot_checks_in_si() {
     // Case 1: head-on, target 6 nm dead ahead at 12 kn.
     let problem = case(1).planning_problem();

@@ -3,7 +3,7 @@
 //! and whatever text is given to the parser, validation and conversion return
 //! `Ok` or a typed [`ScenarioError`], never panic.
 //!
-//! The cases are drawn from a seeded ChaCha8 stream (the crate's own random
+//! The cases are drawn from a seeded `ChaCha8` stream (the crate's own random
 //! source; no extra dev-dependency), 256 per property, so a failure is
 //! reproducible from the case number printed with it.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
@@ -13,8 +13,8 @@ use rand_core::{RngCore, SeedableRng};
 use std::time::Instant;
 use vorrt_planner::{PlannerError, PlanningProblem};
 use vorrt_scenarios::{
-    Behaviour, Lane, MAX_TARGETS, PlannerSettings, Scenario, ScenarioError, SimulationSettings,
-    VesselSpec,
+    Behaviour, Lane, MAX_TARGETS, PlannerSettings, ProjectedPositions, Scenario, ScenarioError,
+    SimulationSettings, VesselSpec,
 };
 
 const CASES: u64 = 256;
@@ -31,10 +31,20 @@ impl Gen {
         self.0.next_u64() % n.max(1)
     }
 
+    /// [`Gen::below`] as an index.
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "the tests run on 64-bit targets, where `u64` fits `usize`"
+    )]
+    fn below_usize(&mut self, n: u64) -> usize {
+        self.below(n) as usize
+    }
+
     fn chance(&mut self, percent: u64) -> bool {
         self.below(100) < percent
     }
 
+    #[expect(clippy::cast_precision_loss, reason = "53-bit values, exact in f64")]
     fn unit(&mut self) -> f64 {
         (self.0.next_u64() >> 11) as f64 / (1u64 << 53) as f64
     }
@@ -60,7 +70,7 @@ impl Gen {
             360.0,
         ];
         match self.below(4) {
-            0 => SPECIAL[self.below(SPECIAL.len() as u64) as usize],
+            0 => SPECIAL[self.below_usize(SPECIAL.len() as u64)],
             1 => f64::from_bits(self.0.next_u64()),
             2 => (self.unit() - 0.5) * 1e12,
             _ => (self.unit() - 0.5) * 40.0,
@@ -122,7 +132,7 @@ impl Gen {
             goal_lat_lon: None,
             mmsi: None,
             max_turn_rate_deg_s: self.opt(-1.0, 5.0),
-            projected: Default::default(),
+            projected: ProjectedPositions::default(),
         }
     }
 
@@ -134,8 +144,8 @@ impl Gen {
         self.chance(25).then(|| match self.below(4) {
             0 => 0,
             1 => usize::MAX,
-            2 => self.below(1 << 40) as usize,
-            _ => self.below(500) as usize,
+            2 => self.below_usize(1 << 40),
+            _ => self.below_usize(500),
         })
     }
 
@@ -169,13 +179,13 @@ impl Gen {
 
     fn scenario(&mut self) -> Scenario {
         let targets = match self.below(20) {
-            0 => MAX_TARGETS + 1 + self.below(4) as usize,
+            0 => MAX_TARGETS + 1 + self.below_usize(4),
             1 => 0,
-            _ => self.below(5) as usize,
+            _ => self.below_usize(5),
         };
-        let lanes = (0..self.below(3))
+        let lanes = (0..self.below_usize(3))
             .map(|index| Lane {
-                name: self.name(index as usize),
+                name: self.name(index),
                 from_nm: (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
                 to_nm: (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
                 width_nm: self.mostly(-1.0, 3.0),
@@ -268,6 +278,7 @@ fn arbitrary_scenario_values_validate_or_name_a_field() {
 }
 
 #[test]
+#[expect(clippy::cast_precision_loss, reason = "target indices, far below 2^52")]
 fn too_many_targets_are_refused_by_name() {
     let mut scenario = Gen::new(1).scenario();
     scenario.ownship =
@@ -328,31 +339,30 @@ const TOKENS: [&str; 24] = [
 /// A mutation of a real scenario file: truncated, bytes replaced, tokens
 /// inserted, numbers replaced by special values, or pieces of two files mixed.
 fn mutate(g: &mut Gen, texts: &[String]) -> String {
-    let mut text: Vec<char> = texts[g.below(texts.len() as u64) as usize]
-        .chars()
-        .collect();
+    let mut text: Vec<char> = texts[g.below_usize(texts.len() as u64)].chars().collect();
     for _ in 0..=g.below(6) {
-        let at = g.below(text.len() as u64 + 1) as usize;
+        let at = g.below_usize(text.len() as u64 + 1);
         match g.below(6) {
             0 => text.truncate(at),
             1 => {
                 if at < text.len() {
-                    text[at] = char::from_u32(g.below(0x3000) as u32).unwrap_or('\u{fffd}');
+                    text[at] = char::from_u32(u32::try_from(g.below(0x3000)).unwrap())
+                        .unwrap_or('\u{fffd}');
                 }
             }
             2 => {
-                let token = TOKENS[g.below(TOKENS.len() as u64) as usize];
+                let token = TOKENS[g.below_usize(TOKENS.len() as u64)];
                 text.splice(at..at, token.chars());
             }
             3 => {
-                let end = (at + g.below(40) as usize).min(text.len());
+                let end = (at + g.below_usize(40)).min(text.len());
                 text.drain(at..end);
             }
             4 => {
                 // Replace the number starting at or after `at`.
                 let start = text[at..]
                     .iter()
-                    .position(|c| c.is_ascii_digit())
+                    .position(char::is_ascii_digit)
                     .map(|offset| at + offset);
                 if let Some(start) = start {
                     let end = text[start..]
@@ -364,10 +374,8 @@ fn mutate(g: &mut Gen, texts: &[String]) -> String {
                 }
             }
             _ => {
-                let other: Vec<char> = texts[g.below(texts.len() as u64) as usize]
-                    .chars()
-                    .collect();
-                let from = g.below(other.len() as u64) as usize;
+                let other: Vec<char> = texts[g.below_usize(texts.len() as u64)].chars().collect();
+                let from = g.below_usize(other.len() as u64);
                 text.splice(at..at, other[from..].iter().copied().take(200));
             }
         }
@@ -401,9 +409,9 @@ fn random_text_parses_or_errs() {
         b"()[]{},:\"'. -+0123456789eEScenarioVesselnamestartgoal_nmNaNinf\n\t/*#r";
     for case in 0..CASES {
         let mut g = Gen::new(case);
-        let length = g.below(300) as usize;
+        let length = g.below_usize(300);
         let text: String = (0..length)
-            .map(|_| ALPHABET[g.below(ALPHABET.len() as u64) as usize] as char)
+            .map(|_| ALPHABET[g.below_usize(ALPHABET.len() as u64)] as char)
             .collect();
         let started = Instant::now();
         let result = Scenario::from_ron_str(&text, "generated.ron");

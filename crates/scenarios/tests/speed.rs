@@ -11,7 +11,7 @@ use vorrt_scenarios::{Scenario, evaluate, simulate};
 /// Ownship north at 12 kn, 100 m long, bound 8 nm north. TS1 crosses from
 /// starboard on a collision course (both at (0, 3) nm at 15 min): ownship
 /// gives way. TS2 runs alongside 400 m to starboard at the same speed: any
-/// turn to starboard closes it within d_th at once, and a turn to port is
+/// turn to starboard closes it within `d_th` at once, and a turn to port is
 /// forbidden in a crossing (rule 15). Only slowing down is left.
 const SLOW_DOWN: &str = r#"Scenario(
     name: "slow_down",

@@ -27,6 +27,11 @@ fn without_clock(mut record: SimulationRecord) -> SimulationRecord {
 
 /// Steps `run` to its end by hand, checking every moment against the record
 /// so far, and gives the record.
+#[expect(
+    clippy::float_cmp,
+    reason = "stepping by hand gives exactly the times `simulate` gives"
+)]
+#[expect(clippy::cast_precision_loss, reason = "a step count, far below 2^52")]
 fn step_by_hand(mut run: ClosedLoop) -> SimulationRecord {
     let time_step_s = run.record().time_step_s;
     let (mut planned, mut kept) = (0, 0);
@@ -98,6 +103,7 @@ fn stepping_by_hand_gives_the_record_simulate_gives() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn a_run_is_finished_at_its_goal_or_when_its_time_is_up() {
     let mut scenario = fixture("paper/head_on.ron");
     scenario.simulation.max_duration_s = Some(60.0);
@@ -175,6 +181,7 @@ fn crossing_with(scenario: &Scenario, states: Vec<TimedState>) -> ClosedLoop {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn a_recorded_target_is_where_the_recording_says_at_every_step() {
     let scenario = fixture("paper/crossing.ron");
     // It turns 40° to port after 5 minutes, toward ownship's route.
@@ -186,6 +193,11 @@ fn a_recorded_target_is_where_the_recording_says_at_every_step() {
         let time_s = state.time_s;
         let target = state.targets[0];
         // The recorded states around `time_s`, a minute apart.
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a non-negative run time of minutes, floored"
+        )]
         let minute = (time_s / 60.0).floor() as usize;
         let from = &states[minute];
         if from.time_s == time_s {
@@ -221,6 +233,7 @@ fn a_recorded_target_is_where_the_recording_says_at_every_step() {
 }
 
 #[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn ownship_plans_from_the_recordings_present_never_its_future() {
     let scenario = fixture("paper/crossing.ron");
     // Two recordings alike for the first 5 minutes; then one holds on west,

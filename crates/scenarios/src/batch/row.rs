@@ -8,6 +8,10 @@ use vorrt_colregs::{ComplianceViolation, Role};
 
 /// The results of one scenario of a batch: one CSV row.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "a flat CSV row of documented outcome flags"
+)]
 pub struct BatchRow {
     /// Position in the whole batch.
     pub index: u64,
@@ -156,6 +160,11 @@ impl BatchRow {
             .iter()
             .min_by(|a, b| a.min_distance_m.total_cmp(&b.min_distance_m));
         let plans = evaluation.plans_made + evaluation.failed_plans;
+        #[expect(
+            clippy::cast_precision_loss,
+            reason = "a count of plans, far below 2^52"
+        )]
+        let plans_f64 = plans as f64;
         let give_way = judged_give_way(evaluation);
         let planning_time_ms = 1000.0 * evaluation.planning_time_s;
         Self {
@@ -177,7 +186,7 @@ impl BatchRow {
             path_overhead_pct: evaluation.path_overhead_pct,
             planning_time_ms,
             planning_time_per_plan_ms: if plans > 0 {
-                planning_time_ms / plans as f64
+                planning_time_ms / plans_f64
             } else {
                 0.0
             },
@@ -237,7 +246,7 @@ fn finding_names(evaluation: &Evaluation) -> String {
     for target in &evaluation.targets {
         match &target.assessment {
             Some(assessment) => {
-                findings.extend(assessment.violations.iter().map(|v| v.name()));
+                findings.extend(assessment.violations.iter().map(ComplianceViolation::name));
             }
             None if !target.clearance_kept => {
                 findings.insert("clearance_violated");

@@ -32,6 +32,12 @@ impl Percentiles {
     pub fn of(values: impl IntoIterator<Item = f64>) -> Self {
         let mut sorted: Vec<f64> = values.into_iter().filter(|v| v.is_finite()).collect();
         sorted.sort_by(f64::total_cmp);
+        #[expect(
+            clippy::cast_precision_loss,
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a count of values; the rank is rounded up, non-negative and clamped"
+        )]
         let rank = |p: f64| -> Option<f64> {
             if sorted.is_empty() {
                 return None;
@@ -39,6 +45,11 @@ impl Percentiles {
             let position = ((p / 100.0) * sorted.len() as f64).ceil() as usize;
             Some(sorted[position.clamp(1, sorted.len()) - 1])
         };
+        #[expect(
+            clippy::cast_precision_loss,
+            reason = "a count of values, far below 2^52"
+        )]
+        let mean = (!sorted.is_empty()).then(|| sorted.iter().sum::<f64>() / sorted.len() as f64);
         Self {
             count: sorted.len(),
             min: sorted.first().copied(),
@@ -48,7 +59,7 @@ impl Percentiles {
             p90: rank(90.0),
             p99: rank(99.0),
             max: sorted.last().copied(),
-            mean: (!sorted.is_empty()).then(|| sorted.iter().sum::<f64>() / sorted.len() as f64),
+            mean,
         }
     }
 }
@@ -128,6 +139,10 @@ pub struct BatchSummary {
 impl BatchSummary {
     /// Summarises `rows` (in any order).
     #[must_use]
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "counts of runs, encounters and replans, far below 2^52"
+    )]
     pub fn from_rows(rows: &[BatchRow]) -> Self {
         let mut rows: Vec<&BatchRow> = rows.iter().collect();
         rows.sort_by_key(|row| row.index);

@@ -2,7 +2,7 @@
 //! with a chosen mix of encounter types, and crossings of a traffic
 //! separation scheme at a chosen traffic density.
 //!
-//! Every draw comes from a ChaCha8 stream of its own per scenario index
+//! Every draw comes from a `ChaCha8` stream of its own per scenario index
 //! (seed = the batch seed, stream = the index), so scenario `k` of a batch is
 //! the same however the batch is sharded, and a behaviour's own draws (when a
 //! [`Behaviour::SuddenTurn`](crate::Behaviour::SuddenTurn) target turns) come from a second stream, so the
@@ -124,6 +124,11 @@ fn check_range(
 
 /// `nodes_per_phase` for a route of `route_m`: five nodes per step of the
 /// default 100 m.
+#[expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    reason = "a positive route over a positive step, rounded up; far below `usize::MAX`"
+)]
 fn nodes_for_route(route_m: f64) -> usize {
     let step_m = vorrt_planner::PlannerConfig::default().step_m;
     ((5.0 * route_m / step_m).ceil() as usize).max(200)

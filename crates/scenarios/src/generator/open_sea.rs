@@ -7,7 +7,7 @@ use super::{
     GeneratorError, MAX_GENERATED_TARGETS, OWNSHIP_LENGTH_M, TargetBehaviour, check_range,
     planner_for_route,
 };
-use crate::scenario::{Scenario, VesselSpec};
+use crate::scenario::{Scenario, SimulationSettings, VesselSpec};
 use glam::DVec2;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -297,7 +297,7 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
         ownship,
         targets,
         planner: planner_for_route(route_m, None),
-        simulation: Default::default(),
+        simulation: SimulationSettings::default(),
         lanes: Vec::new(),
         seed: Some(run_seed(seed, index)),
         start_time: None,

@@ -20,7 +20,7 @@ pub(super) fn behaviour_stream(seed: u64, index: u64) -> ChaCha8Rng {
 }
 
 /// The simulation seed of scenario `index` of a batch seeded with `seed`
-/// (SplitMix64 of the two): what the batch runner simulates it with, and what
+/// (`SplitMix64` of the two): what the batch runner simulates it with, and what
 /// generated scenarios carry in their `seed` field, so that
 /// `vorrt simulate` on a generated file repeats its batch run.
 #[must_use]
@@ -36,6 +36,7 @@ fn splitmix64(x: u64) -> u64 {
 }
 
 /// A uniform draw in `[low, high)`.
+#[expect(clippy::cast_precision_loss, reason = "53-bit values, exact in f64")]
 pub(super) fn uniform(rng: &mut ChaCha8Rng, low: f64, high: f64) -> f64 {
     let unit = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     low + (high - low) * unit

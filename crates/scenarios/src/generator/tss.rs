@@ -2,7 +2,7 @@
 
 use super::random::{behaviour_stream, round_to, run_seed, scenario_stream, uniform, uniform_in};
 use super::{GeneratorError, OWNSHIP_LENGTH_M, TargetBehaviour, check_range, planner_for_route};
-use crate::scenario::{Lane, Scenario, VesselSpec};
+use crate::scenario::{Lane, Scenario, SimulationSettings, VesselSpec};
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::units;
 
@@ -149,6 +149,17 @@ fn tss_lanes(spec: &TssSpec, half_length_nm: f64) -> Vec<(Lane, f64)> {
     }
 }
 
+/// How many targets a stretch of lane `length_nm` long carries at `per_nm`:
+/// at least one.
+#[expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    reason = "a bounded, rounded count of targets; negatives saturate to 0"
+)]
+fn target_count(per_nm: f64, length_nm: f64) -> usize {
+    ((per_nm * length_nm).round() as usize).max(1)
+}
+
 /// Scenario `index` of a TSS batch seeded with `seed` (see [`TssSpec`]); the
 /// planner's clearance is 100 m, the paper's in a scheme. Validated.
 ///
@@ -194,8 +205,9 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     let lanes = tss_lanes(spec, far_nm);
     let mut targets = Vec::new();
     for ((lane, course_deg), (near, far)) in lanes.iter().zip(&stretches) {
-        let count = ((spec.targets_per_nm * (far - near)).round() as usize).max(1);
+        let count = target_count(spec.targets_per_nm, far - near);
         let centre = lane.from_nm.1;
+        #[expect(clippy::float_cmp, reason = "courses are the literals 90 and 270")]
         let westward = *course_deg == 270.0;
         let half = (0.5 * spec.lane_width_nm - 0.05).max(0.0);
         for _ in 0..count {
@@ -242,7 +254,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         ownship,
         targets,
         planner: planner_for_route(route_m, Some(100.0)),
-        simulation: Default::default(),
+        simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
         seed: Some(run_seed(seed, index)),
         start_time: None,

@@ -14,6 +14,7 @@ fn straight(vessel: &VesselState, time_s: f64) -> VesselState {
 /// The encounter (from ownship's side) when risk of collision first arises
 /// with both holding course, and when; `None` if it never does within
 /// `horizon_s`.
+#[must_use]
 pub fn encounter_at_risk(
     own: &VesselState,
     target: &VesselState,
@@ -21,8 +22,14 @@ pub fn encounter_at_risk(
     horizon_s: f64,
 ) -> Option<(f64, Encounter)> {
     let step_s = 5.0;
-    let steps = (horizon_s / step_s).ceil() as usize;
-    (0..=steps).find_map(|step| {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a bounded horizon over a 5 s step, rounded up; negatives saturate to 0"
+    )]
+    let last_step = (horizon_s / step_s).ceil() as usize;
+    (0..=last_step).find_map(|step| {
+        #[expect(clippy::cast_precision_loss, reason = "a step count, far below 2^52")]
         let time_s = step as f64 * step_s;
         let own_now = straight(own, time_s);
         let target_now = straight(target, time_s);

@@ -518,7 +518,7 @@ impl ClosedLoop {
             &mut setup.planners,
             &problem,
             &setup.model,
-            call,
+            &call,
             &mut self.active,
             &mut self.record.plans,
             &mut self.retry,
@@ -531,6 +531,7 @@ impl ClosedLoop {
     /// was at the step's start.
     fn sail(&mut self) {
         self.step += 1;
+        #[expect(clippy::cast_precision_loss, reason = "a step count, far below 2^52")]
         let next_time_s = self.step as f64 * self.setup.time_step_s;
         let own_now = self.own;
         self.own = match &self.active {

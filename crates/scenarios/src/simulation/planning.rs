@@ -150,20 +150,20 @@ pub(super) fn plan_now(
     planners: &mut [Planner],
     problem: &PlanningProblem,
     model: &OwnshipModel,
-    call: PlanCall,
+    call: &PlanCall,
     active: &mut Option<ActivePlan>,
     plans: &mut Vec<PlanEvent>,
     retry: &mut RetryTimer,
 ) {
     let time_s = problem.start_time_s;
     let started = Instant::now();
-    let (found, mut attempts) = search(planners, problem, &call);
+    let (found, mut attempts) = search(planners, problem, call);
     let Some((plan, compliance)) = found else {
         retry.failed(time_s, &problem.encounters);
         if attempts.spent.elapsed_s == 0.0 {
             attempts.spent.elapsed_s = started.elapsed().as_secs_f64();
         }
-        fall_back(planners, problem, model, &call, active, plans, attempts);
+        fall_back(planners, problem, model, call, active, plans, attempts);
         return;
     };
     if compliance == Compliance::Full {
@@ -467,19 +467,19 @@ mod tests {
         ));
     }
 
-    fn latch(encounter: Encounter) -> Option<EncounterLatch> {
-        Some(EncounterLatch {
+    fn latch(encounter: Encounter) -> EncounterLatch {
+        EncounterLatch {
             encounter,
             reference_course_rad: 0.0,
             reference_speed_mps: 6.0,
             latched_at_s: 0.0,
-        })
+        }
     }
 
     #[test]
     fn a_retry_is_due_after_the_wait_or_when_the_encounters_change() {
         let mut retry = RetryTimer::idle();
-        let situation = vec![latch(Encounter::HeadOn), None];
+        let situation = vec![Some(latch(Encounter::HeadOn)), None];
         assert!(!retry.due(1e9, &situation), "nothing failed yet");
         retry.failed(100.0, &situation);
         assert!(!retry.due(100.0 + RETRY_AFTER_S - 5.0, &situation));
@@ -488,7 +488,10 @@ mod tests {
         assert!(retry.due(105.0, &[None, None]));
         assert!(retry.due(
             105.0,
-            &[latch(Encounter::HeadOn), latch(Encounter::Overtaking)]
+            &[
+                Some(latch(Encounter::HeadOn)),
+                Some(latch(Encounter::Overtaking))
+            ]
         ));
         retry.succeeded();
         assert!(!retry.due(1e9, &[None, None]));
@@ -540,7 +543,7 @@ mod tests {
             &mut planners,
             &problem,
             &model,
-            PlanCall {
+            &PlanCall {
                 why: PlanTrigger::Initial,
                 seed: 9,
                 clearance_m: config.clearance_m,

@@ -112,7 +112,7 @@ pub struct SimulationRecord {
     /// passed the planner's validity check, so ownship kept it.
     #[serde(default)]
     pub plans_kept: Vec<PlanCheck>,
-    /// The planner configuration the run was made with (d_th and the rules
+    /// The planner configuration the run was made with (`d_th` and the rules
     /// that judge it come from here).
     pub config: PlannerConfig,
     /// Ownship's largest rate of turn, radians per second (`None`:

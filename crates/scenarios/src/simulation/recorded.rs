@@ -113,6 +113,10 @@ impl RecordedMotion {
 
     /// Where the recording puts the target at `time_s`.
     #[must_use]
+    #[expect(
+        clippy::float_cmp,
+        reason = "a query exactly at a recorded time returns that state"
+    )]
     pub fn state_at(&self, time_s: f64) -> VesselState {
         // The first state after `time_s`.
         let after = self.states.partition_point(|state| state.time_s <= time_s);
@@ -242,6 +246,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn it_is_announced_from_its_present_state_alone() {
         // Two recordings alike up to 100 s; one then turns hard to port.
         let straight = vec![at(0.0, 0.0, 0.0, 0.0, 5.0), at(100.0, 0.0, 500.0, 0.0, 5.0)];

@@ -83,6 +83,7 @@ fn noise_stream(seed: u64, index: usize) -> ChaCha8Rng {
 /// A standard normal draw (Box-Muller) from `rng`.
 fn standard_normal(rng: &mut ChaCha8Rng) -> f64 {
     // 53 random bits in (0, 1].
+    #[expect(clippy::cast_precision_loss, reason = "53-bit values, exact in f64")]
     let unit = |rng: &mut ChaCha8Rng| ((rng.next_u64() >> 11) as f64 + 1.0) / (1u64 << 53) as f64;
     let (u1, u2) = (unit(rng), unit(rng));
     (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
@@ -315,9 +316,14 @@ fn passing_time_s(
     let forward_of_beam = |ahead: &VesselState, astern: &VesselState| {
         (ahead.position_m - astern.position_m).dot(astern.velocity_mps()) > 0.0
     };
-    let steps = (PASSING_HORIZON_S / PASSING_STEP_S) as usize;
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a ratio of two positive constants, 60"
+    )]
+    let steps = (PASSING_HORIZON_S / PASSING_STEP_S) as u32;
     (0..=steps)
-        .map(|step| step as f64 * PASSING_STEP_S)
+        .map(|step| f64::from(step) * PASSING_STEP_S)
         .find(|&elapsed_s| {
             let (own, target) = (own.advanced(elapsed_s), target.advanced(elapsed_s));
             let overtaken = match encounter {
