@@ -173,7 +173,8 @@ fn bench_prediction(c: &mut Criterion) {
             if i % 2 == 0 {
                 TargetState::constant_velocity(*target)
             } else {
-                TargetState::toward_goal(*target, DVec2::new(-8000.0, 500.0 * i as f64))
+                let north_m = 500.0 * f64::from(u32::try_from(i).expect("a few pairs"));
+                TargetState::toward_goal(*target, DVec2::new(-8000.0, north_m))
             }
         })
         .collect();

@@ -43,7 +43,7 @@ fn bench_plan(
     problem: &PlanningProblem,
     config: PlannerConfig,
 ) {
-    describe(&format!("{}/{id}", group_name), problem, config);
+    describe(&format!("{group_name}/{id}"), problem, config);
     let mut planner = Planner::new(config).expect("valid configuration");
     group.bench_function(id, |b| {
         b.iter(|| {

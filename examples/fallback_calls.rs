@@ -123,10 +123,12 @@ impl Tally {
             "trigger | fully compliant plan before | outcome, calls, planning s (share), samples drawn (share)"
         );
         for (key, (calls, seconds, samples)) in &self.groups {
+            #[expect(clippy::cast_precision_loss, reason = "sample counts, far below 2^52")]
+            let sample_share = *samples as f64 / total_samples as f64;
             println!(
                 "{key:<30} {calls:>6} {seconds:>8.2} s ({:>4.1} %) {samples:>10} ({:>4.1} %)",
                 100.0 * seconds / total_s,
-                100.0 * *samples as f64 / total_samples as f64
+                100.0 * sample_share
             );
         }
         println!("total {total_s:.2} s, {total_samples} samples, {runs} runs");
@@ -138,9 +140,11 @@ impl Tally {
             "retries: encounters changed since the last failure | failures before (8 = 8 or more) | retries | fully compliant plans found"
         );
         for ((changed, failures), (retries, found)) in &self.streaks {
+            #[expect(clippy::cast_precision_loss, reason = "retry counts, far below 2^52")]
+            let found_share = *found as f64 / *retries as f64;
             println!(
                 "{changed:<5} | {failures} | {retries:>5} | {found:>4} ({:.0} %)",
-                100.0 * *found as f64 / *retries as f64
+                100.0 * found_share
             );
         }
     }

@@ -79,12 +79,12 @@ fn main() -> ExitCode {
     );
     let (mut total_ms, mut total_planning_ms, mut total_calls) = (0.0, 0.0, 0usize);
     for (_, scenario) in &scenarios {
-        let mut walls_ms = Vec::new();
+        let mut wall_samples_ms = Vec::new();
         let mut last = None;
         for _ in 0..repeats {
             let started = Instant::now();
             let outcome = simulate(scenario, seed);
-            walls_ms.push(started.elapsed().as_secs_f64() * 1e3);
+            wall_samples_ms.push(started.elapsed().as_secs_f64() * 1e3);
             match outcome {
                 Ok(record) => last = Some(record),
                 Err(error) => {
@@ -96,7 +96,7 @@ fn main() -> ExitCode {
         let Some(record) = last else {
             return ExitCode::from(2);
         };
-        let wall_ms = median(walls_ms);
+        let wall_ms = median(wall_samples_ms);
         let planning_ms = record.planning_time_s() * 1e3;
         total_ms += wall_ms;
         total_planning_ms += planning_ms;

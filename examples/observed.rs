@@ -64,7 +64,11 @@ fn findings(evaluation: &Evaluation) -> String {
     let mut all: Vec<String> = evaluation.track_findings.clone();
     for target in &evaluation.targets {
         if !target.findings.is_empty() {
-            let names: Vec<&str> = target.findings.iter().map(|f| f.name()).collect();
+            let names: Vec<&str> = target
+                .findings
+                .iter()
+                .map(vorrt::colregs::ComplianceViolation::name)
+                .collect();
             all.push(format!("{}: {}", target.name, names.join(", ")));
         }
     }
@@ -128,12 +132,14 @@ fn print_markdown(rows: &[Evaluation]) {
                 .any(|f| matches!(f.name(), "late_action" | "no_action"))
         })
         .count();
+    #[expect(clippy::cast_precision_loss, reason = "a count of turn reversals")]
+    let reversals: Vec<f64> = rows.iter().map(|row| row.turn_reversals as f64).collect();
     println!();
     println!(
         "{count} runs: median reversals {:.1}, median course change {:.1}°/nm, largest rate of turn {:.2}°/s; \
          {} of {} give-way encounters readily apparent by course, {} begun early; {} of {count} runs with no finding, \
          {} with d_th kept, {} reached the goal.",
-        median(rows.iter().map(|row| row.turn_reversals as f64).collect()),
+        median(reversals),
         median(
             rows.iter()
                 .map(|row| row.course_change_deg_per_nm)

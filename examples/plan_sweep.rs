@@ -31,7 +31,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let (mut planned, mut total, mut overhead_pct, mut elapsed_s) = (0u32, 0u32, 0.0, 0.0);
+    let (mut found, mut total, mut overhead_pct, mut elapsed_s) = (0u32, 0u32, 0.0, 0.0);
     let mut failures = Vec::new();
     for (_, scenario) in &scenarios {
         let config = match scenario.planner_config() {
@@ -53,7 +53,7 @@ fn main() -> ExitCode {
             elapsed_s += started.elapsed().as_secs_f64();
             match outcome {
                 Ok(plan) => {
-                    planned += 1;
+                    found += 1;
                     overhead_pct += 100.0 * (plan.length_m() / straight_m - 1.0);
                 }
                 Err(_) => failures.push(format!("{} seed {seed}", scenario.name)),
@@ -61,8 +61,8 @@ fn main() -> ExitCode {
         }
     }
     println!(
-        "{folder}: {planned} of {total} plans found; mean path overhead {:.1} %; mean plan time {:.2} ms",
-        overhead_pct / f64::from(planned.max(1)),
+        "{folder}: {found} of {total} plans found; mean path overhead {:.1} %; mean plan time {:.2} ms",
+        overhead_pct / f64::from(found.max(1)),
         1e3 * elapsed_s / f64::from(total.max(1)),
     );
     if !failures.is_empty() {

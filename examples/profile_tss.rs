@@ -47,17 +47,17 @@ fn main() -> ExitCode {
     };
     let problem = scenario.planning_problem();
     let mut planner = Planner::new(config).expect("the fixture's settings are valid");
-    let (mut planned, mut samples) = (0u64, 0u64);
+    let (mut found, mut samples) = (0u64, 0u64);
     for run in 1..=runs {
         let seed = fixed_seed.unwrap_or(run);
         match planner.plan(&problem, seed) {
             Ok(plan) => {
-                planned += 1;
+                found += 1;
                 samples += plan.statistics.samples;
             }
             Err(error) => eprintln!("run {run}, seed {seed}: {error}"),
         }
     }
-    eprintln!("{planned} of {runs} plans found, {samples} samples in those");
+    eprintln!("{found} of {runs} plans found, {samples} samples in those");
     ExitCode::SUCCESS
 }

@@ -34,7 +34,7 @@ pub fn fixture_problem(dir: &str, name: &str) -> (PlanningProblem, PlannerConfig
     (scenario.planning_problem(), config)
 }
 
-/// SplitMix64: a tiny, fixed, dependency-free generator, so that the
+/// `SplitMix64`: a tiny, fixed, dependency-free generator, so that the
 /// generated encounters never change with a dependency's version.
 pub struct SplitMix64(u64);
 
@@ -53,6 +53,10 @@ impl SplitMix64 {
 
     /// Uniform in `[low, high)`.
     pub fn uniform(&mut self, low: f64, high: f64) -> f64 {
+        #[expect(
+            clippy::cast_precision_loss,
+            reason = "53 random bits and 2^53: both exact in f64"
+        )]
         let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
         low + (high - low) * unit
     }
@@ -90,12 +94,12 @@ pub fn generated_problem(targets: usize, seed: u64) -> PlanningProblem {
             let meeting = start + route * fraction;
             let meeting_time = route.length() * fraction / own_speed;
             let course = rng.uniform(225f64.to_radians(), 315f64.to_radians());
-            let speed = rng.uniform(6.0, 16.0) * KN;
+            let target_speed = rng.uniform(6.0, 16.0) * KN;
             let heading = DVec2::new(course.sin(), course.cos());
             let sideways = DVec2::new(heading.y, -heading.x) * rng.uniform(-300.0, 300.0);
-            let position = meeting + sideways - heading * speed * meeting_time;
+            let position = meeting + sideways - heading * target_speed * meeting_time;
             let length = rng.uniform(50.0, 200.0);
-            TargetState::constant_velocity(VesselState::new(position, course, speed, length))
+            TargetState::constant_velocity(VesselState::new(position, course, target_speed, length))
         })
         .collect();
     PlanningProblem::new(own, goal, vessels)

@@ -40,6 +40,10 @@ pub(crate) enum Command {
     /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
     /// DIR/trajectory.geojson and DIR/trajectory.gpx.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[command(after_help = EXIT_CODES)]
     Simulate {
         /// The scenario file (RON; see docs/scenario-format.md).
@@ -57,6 +61,10 @@ pub(crate) enum Command {
     /// statistics on stdout; for a geographic scenario, --format geojson
     /// prints a GeoJSON LineString and --format gpx a GPX 1.1 route instead. When no safe path exists, prints the planner's
     /// reason on stderr and exits 1.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[command(after_help = EXIT_CODES)]
     Plan {
         /// The scenario file (RON).
@@ -108,6 +116,10 @@ pub(crate) enum Command {
     /// percentiles), DIR/run.json, DIR/min_distance.svg, DIR/planning_time.svg
     /// and DIR/failures/*.ron. Exits 0 once the batch has run, whatever its
     /// results. See docs/evaluation.md.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[command(after_help = EXIT_CODES)]
     Batch(BatchArgs),
     /// Write generated scenarios as .ron files (the ones `batch --generate`
@@ -134,6 +146,10 @@ pub(crate) enum Command {
     /// DIR/judgement.json and the trajectory and distance plots. Exits 0
     /// when the tracks are safe (no collision, d_th kept) and compliant, 1
     /// when not, 2 on bad input.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[command(after_help = EXIT_CODES)]
     Judge(crate::judge::JudgeArgs),
     /// Merge the outputs of the shards of one batch into one rows.csv,
@@ -205,6 +221,10 @@ pub(crate) struct GeneratorArgs {
     pub(crate) behaviour: BehaviourName,
     /// Only the scenarios k with k % n == i (e.g. --shard
     /// $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT).
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[arg(long, value_name = "i/n")]
     pub(crate) shard: Option<String>,
 }
@@ -273,6 +293,10 @@ pub(crate) enum PlanFormat {
     /// The plan schema of docs/report-format.md.
     Json,
     /// A GeoJSON Feature with the plan's LineString (geographic scenarios).
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     Geojson,
     /// A GPX 1.1 route (geographic scenarios).
     Gpx,

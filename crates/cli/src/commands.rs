@@ -137,11 +137,11 @@ fn plan_command(
     let d_th_m = config.clearance_m;
     let mut planner = Planner::new(config)
         .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
-    let planned = {
+    let outcome = {
         let _ticker = Ticker::start(format!("planning {}", scenario.source));
         planner.plan(&scenario.planning_problem(), seed)
     };
-    let plan = planned.map_err(|error| match error {
+    let plan = outcome.map_err(|error| match error {
         vorrt_planner::PlannerError::NoSafePath { .. }
         | vorrt_planner::PlannerError::NodeBudgetTooSmall { .. }
         | vorrt_planner::PlannerError::BudgetExhausted { .. } => {

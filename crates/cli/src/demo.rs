@@ -144,8 +144,7 @@ pub(crate) fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
     }
     if entries.is_empty() {
         return Err(CliError::BadInput(format!(
-            "no scenario files (*.ron) in {} or its subfolders",
-            fixtures
+            "no scenario files (*.ron) in {fixtures} or its subfolders"
         )));
     }
     std::fs::create_dir_all(&options.out).map_err(|error| {
@@ -434,11 +433,13 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
         let violations = if target.violations.is_empty() {
             String::new()
         } else {
-            let items: String = target
+            let items = target
                 .violations
                 .iter()
-                .map(|v| format!("<li>{}</li>", escape(v)))
-                .collect();
+                .fold(String::new(), |mut items, v| {
+                    let _ = write!(items, "<li>{}</li>", escape(v));
+                    items
+                });
             format!("<ul class=\"violations\">{items}</ul>")
         };
         let _ = writeln!(

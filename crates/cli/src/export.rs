@@ -1,6 +1,6 @@
 //! Trajectories and plans out, for other tools: `trajectory.csv` of every run;
 //! `trajectory.geojson` (RFC 7946) and `trajectory.gpx` (GPX 1.1) of a
-//! geographic run; the plan as a GeoJSON LineString or a GPX route. Written
+//! geographic run; the plan as a `GeoJSON` `LineString` or a GPX route. Written
 //! with the `csv`, `geojson` and `gpx` crates; described in
 //! `docs/report-format.md`.
 
@@ -16,7 +16,7 @@ use vorrt_scenarios::{LocalFrame, Scenario, SimulationRecord, VesselSpec};
 
 /// The CSV trajectory, written for every run.
 pub(crate) const TRAJECTORY_CSV: &str = "trajectory.csv";
-/// The GeoJSON trajectory, written for geographic runs.
+/// The `GeoJSON` trajectory, written for geographic runs.
 pub(crate) const TRAJECTORY_GEOJSON: &str = "trajectory.geojson";
 /// The GPX trajectory, written for geographic runs.
 pub(crate) const TRAJECTORY_GPX: &str = "trajectory.gpx";
@@ -136,7 +136,7 @@ fn geographic_frame(scenario: &Scenario) -> Result<LocalFrame, CliError> {
     })
 }
 
-/// `trajectory.geojson`: a FeatureCollection with one LineString per vessel
+/// `trajectory.geojson`: a `FeatureCollection` with one `LineString` per vessel
 /// (`name`, `role` `ownship`/`target`, `mmsi` when known, `length_m`, and for
 /// a target its `encounter` and ownship's `colregs_role` from the report;
 /// every point's time as `times_s`, seconds, and `coordTimes`, ISO 8601 UTC) and
@@ -319,7 +319,7 @@ pub(crate) fn write_trajectories(
     Ok(names)
 }
 
-/// The plan as a GeoJSON Feature: a LineString through its waypoints, with
+/// The plan as a `GeoJSON` Feature: a `LineString` through its waypoints, with
 /// the scenario's name, the seed and each waypoint's time (`times_s`).
 ///
 /// # Errors

@@ -1,4 +1,4 @@
-//! The font PNG text is drawn with: DejaVu Sans, bundled in the binary
+//! The font PNG text is drawn with: `DejaVu` Sans, bundled in the binary
 //! (`assets/DejaVuSans.ttf`, licence in `assets/DejaVuSans-LICENSE.txt`), so
 //! that plots read the same on a machine with no system fonts. SVG files only
 //! name the family (`sans-serif`); the viewer picks the font.
@@ -9,7 +9,7 @@ use std::sync::Once;
 /// The family name plots use for all text.
 pub(crate) const FAMILY: &str = "sans-serif";
 
-/// The bytes of DejaVu Sans 2.37.
+/// The bytes of `DejaVu` Sans 2.37.
 pub(crate) static DEJAVU_SANS: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
 
 /// Registers the bundled font for every style of [`FAMILY`] (bold and italic

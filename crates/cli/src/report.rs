@@ -16,6 +16,10 @@ pub const FORMAT_VERSION: u32 = 1;
 
 /// `report.json`: how one closed-loop run fared.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "plain data: the documented yes/no fields of report.json"
+)]
 pub struct Report {
     /// Schema version, [`FORMAT_VERSION`].
     pub format_version: u32,

@@ -78,6 +78,13 @@ fn simulate_writes_a_report_that_matches_the_library() {
 
     let text = std::fs::read_to_string(out.join("report.json")).unwrap();
     let report: Report = serde_json::from_str(&text).unwrap();
+    assert_report_matches_the_library(&report);
+    assert_report_field_names(&text);
+    assert_plots_written(&out);
+}
+
+/// `report`, of the crossing fixture's run, is what the library computes.
+fn assert_report_matches_the_library(report: &Report) {
     let scenario = Scenario::load(&crossing()).unwrap();
     let seed = scenario.seed.unwrap_or(1);
     let record = simulate(&scenario, seed).unwrap();
@@ -130,9 +137,11 @@ fn simulate_writes_a_report_that_matches_the_library() {
         assert_close(reported.score, evaluated.score, "score");
     }
     assert!(report.reached_goal_safely);
+}
 
-    // The raw JSON has the documented field names.
-    let value: serde_json::Value = serde_json::from_str(&text).unwrap();
+/// The raw `report.json` has the documented field names.
+fn assert_report_field_names(text: &str) {
+    let value: serde_json::Value = serde_json::from_str(text).unwrap();
     for field in [
         "scenario",
         "seed",
@@ -158,8 +167,10 @@ fn simulate_writes_a_report_that_matches_the_library() {
             "planning lacks {field}"
         );
     }
+}
 
-    // The plots.
+/// The SVG and PNG plots in `out` are whole, titled and not empty.
+fn assert_plots_written(out: &Path) {
     for name in ["trajectories.svg", "distance.svg"] {
         let svg = std::fs::read_to_string(out.join(name)).unwrap();
         assert!(

@@ -88,7 +88,7 @@ fn example(doc: &str, name: &str) -> String {
     let body = &rest[open..];
     let body = &body[body.find('\n').expect("a fence line") + 1..];
     let close = body.find("\n```").expect("the fence is closed");
-    body[..close + 1].to_owned()
+    body[..=close].to_owned()
 }
 
 /// A JSON example, with the `…` lines that stand for left-out fields dropped.
@@ -96,7 +96,7 @@ fn json_example(doc: &str, name: &str) -> Value {
     let text: String = example(doc, name)
         .lines()
         .filter(|line| !line.trim().starts_with('…'))
-        .map(|line| format!("{line}\n"))
+        .flat_map(|line| [line, "\n"])
         .collect();
     serde_json::from_str(&text).unwrap_or_else(|error| panic!("example {name:?}: {error}"))
 }

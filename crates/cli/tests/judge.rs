@@ -1,9 +1,10 @@
 //! `vorrt judge` end to end through the binary: synthetic manoeuvres whose
 //! verdict a mariner knows at a glance (written as CSV tracks and judged),
-//! agreement with `vorrt simulate` on its own runs, the GeoJSON and AIS
+//! agreement with `vorrt simulate` on its own runs, the `GeoJSON` and AIS
 //! readers, irregular time stamps, and bad input.
 
 use serde_json::Value;
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -89,9 +90,17 @@ impl Vessel {
         let mut ordered = self.course_deg;
         let mut rate = 0.0;
         let mut rows = Vec::new();
-        let steps = (duration_s / dt).round() as usize;
-        let every = (every_s / dt).round() as usize;
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "positive durations of a few thousand steps"
+        )]
+        let (steps, every) = (
+            (duration_s / dt).round() as usize,
+            (every_s / dt).round() as usize,
+        );
         for step in 0..=steps {
+            #[expect(clippy::cast_precision_loss, reason = "a step count, far below 2^52")]
             let time_s = step as f64 * dt;
             for turn in &self.turns {
                 if (turn.at_s - time_s).abs() < dt / 2.0 {
@@ -125,12 +134,14 @@ fn csv(vessels: &[Vessel], duration_s: f64, with_courses: bool) -> String {
         for (vessel, track) in vessels.iter().zip(&tracks) {
             let (time_s, east, north, course) = track[step];
             if with_courses {
-                text += &format!(
-                    "{time_s},{},{east},{north},{course},{},100\n",
+                writeln!(
+                    text,
+                    "{time_s},{},{east},{north},{course},{},100",
                     vessel.name, vessel.speed_kn
-                );
+                )
+                .unwrap();
             } else {
-                text += &format!("{time_s},{},{east},{north},100\n", vessel.name);
+                writeln!(text, "{time_s},{},{east},{north},100", vessel.name).unwrap();
             }
         }
     }
@@ -373,7 +384,7 @@ fn simulate_then_judge(scenario: &Path) {
     let safe_and_compliant = report["collision"] == false
         && report["clearance_kept"] == true
         && report["compliant"] == true;
-    assert_eq!(code, if safe_and_compliant { 0 } else { 1 }, "{what}");
+    assert_eq!(code, i32::from(!safe_and_compliant), "{what}");
     assert_eq!(judgement["input"]["clock"]["resampled"], false, "{what}");
 }
 
@@ -497,15 +508,25 @@ fn irregular_time_stamps_are_resampled_and_gaps_reported() {
     let mut text_csv = "time_s,vessel,east_m,north_m\n".to_owned();
     // Ownship every 3 s with a 200 s gap; the target every 7 s, from 14 s.
     for (time_s, east, north, _) in &own_track {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "whole seconds from 0 to 1500"
+        )]
         let t = *time_s as usize;
         if t.is_multiple_of(3) && !(600..800).contains(&t) {
-            text_csv += &format!("{time_s},own,{east},{north}\n");
+            writeln!(text_csv, "{time_s},own,{east},{north}").unwrap();
         }
     }
     for (time_s, east, north, _) in &target_track {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "whole seconds from 0 to 1500"
+        )]
         let t = *time_s as usize;
         if t.is_multiple_of(7) && t >= 14 {
-            text_csv += &format!("{time_s},T,{east},{north}\n");
+            writeln!(text_csv, "{time_s},T,{east},{north}").unwrap();
         }
     }
     let dir = tempfile::tempdir().unwrap();

@@ -1,6 +1,6 @@
 //! Real data in and out, end to end through the binary: an AIS log (made with
 //! pyais, `scripts/make_ais_fixture.py`) imported, checked and simulated; the
-//! GeoJSON and GPX outputs read back with the `geojson` and `gpx` crates'
+//! `GeoJSON` and GPX outputs read back with the `geojson` and `gpx` crates'
 //! parsers; `trajectory.csv` of every run; bad logs and bad coordinates.
 
 use std::path::{Path, PathBuf};
@@ -96,7 +96,31 @@ fn ais_log_to_geojson_gpx_and_report() {
         stderr(&output)
     );
 
-    // GeoJSON, read by the geojson crate's parser.
+    assert_geojson_trajectory(&out);
+    assert_gpx_trajectory(&out, &log);
+    // The report classifies the head-on target as head-on.
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+    let targets = report["targets"].as_array().unwrap();
+    assert_eq!(targets[0]["name"], "NORTHSEA TRADER");
+    assert_eq!(targets[0]["encounter"], "head_on");
+
+    // trajectory.csv with lat_deg,lon_deg.
+    let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    let mut rows = csv.lines();
+    assert_eq!(
+        rows.next(),
+        Some("time_s,vessel,east_m,north_m,course_deg,speed_kn,lat_deg,lon_deg")
+    );
+    // Written in full, so that `vorrt judge` reads the run as recorded.
+    let first: Vec<&str> = rows.next().unwrap().split(',').collect();
+    assert_eq!(&first[..2], ["0", "VORRT TRIAL"]);
+    assert!(first[2].parse::<f64>().unwrap().abs() < 1e-6, "{first:?}");
+}
+
+/// `trajectory.geojson` in `out`, read by the `geojson` crate's parser: a
+/// `LineString` per vessel, a `Point` per closest approach, in the Channel.
+fn assert_geojson_trajectory(out: &Path) {
     let geojson_text = std::fs::read_to_string(out.join("trajectory.geojson")).unwrap();
     let collection: geojson::FeatureCollection = geojson_text.parse().unwrap();
     let lines: Vec<&geojson::Feature> = collection
@@ -144,8 +168,11 @@ fn ais_log_to_geojson_gpx_and_report() {
         (first[0] + 1.0).abs() < 0.01 && (first[1] - 50.3).abs() < 0.01,
         "{first:?}"
     );
+}
 
-    // GPX, read by the gpx crate's parser.
+/// `trajectory.gpx` in `out`, read by the `gpx` crate's parser: a timed
+/// track per vessel, ownship's starting where the last fix of `log` puts it.
+fn assert_gpx_trajectory(out: &Path, log: &Path) {
     let gpx_file = std::fs::File::open(out.join("trajectory.gpx")).unwrap();
     let document = gpx::read(std::io::BufReader::new(gpx_file)).unwrap();
     assert_eq!(document.version, gpx::GpxVersion::Gpx11);
@@ -161,7 +188,7 @@ fn ais_log_to_geojson_gpx_and_report() {
     let start_time: time::OffsetDateTime = points[0].time.unwrap().into();
     assert_eq!(start_time.unix_timestamp(), 1_714_564_800);
     // Ownship starts where its last fix, dead-reckoned, puts it: within 50 m.
-    let expected = dead_reckoned_last_fix(&std::fs::read_to_string(&log).unwrap());
+    let expected = dead_reckoned_last_fix(&std::fs::read_to_string(log).unwrap());
     let gap_m = haversine_m((start.y(), start.x()), expected);
     assert!(
         gap_m < 50.0,
@@ -171,25 +198,6 @@ fn ais_log_to_geojson_gpx_and_report() {
         gap_m < 2.0,
         "in fact within a couple of metres: {gap_m:.2} m"
     );
-
-    // The report classifies the head-on target as head-on.
-    let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
-    let targets = report["targets"].as_array().unwrap();
-    assert_eq!(targets[0]["name"], "NORTHSEA TRADER");
-    assert_eq!(targets[0]["encounter"], "head_on");
-
-    // trajectory.csv with lat_deg,lon_deg.
-    let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
-    let mut rows = csv.lines();
-    assert_eq!(
-        rows.next(),
-        Some("time_s,vessel,east_m,north_m,course_deg,speed_kn,lat_deg,lon_deg")
-    );
-    // Written in full, so that `vorrt judge` reads the run as recorded.
-    let first: Vec<&str> = rows.next().unwrap().split(',').collect();
-    assert_eq!(&first[..2], ["0", "VORRT TRIAL"]);
-    assert!(first[2].parse::<f64>().unwrap().abs() < 1e-6, "{first:?}");
 }
 
 #[test]
@@ -214,14 +222,19 @@ fn every_run_writes_trajectory_csv() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], "time_s,vessel,east_m,north_m,course_deg,speed_kn");
     assert_eq!((lines.len() - 1) % vessels, 0, "a row per vessel per step");
-    let steps = (lines.len() - 1) / vessels;
+    let step_count = (lines.len() - 1) / vessels;
     let duration_s = report["duration_s"].as_f64().unwrap();
     let step_s = report["time_step_s"].as_f64().unwrap();
-    assert!(steps as f64 >= duration_s / step_s, "{steps} steps");
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "a count of rows, far below 2^52"
+    )]
+    let steps_f64 = step_count as f64;
+    assert!(steps_f64 >= duration_s / step_s, "{step_count} steps");
     // Ownship first, under its scenario name, at every step.
     let text = std::fs::read_to_string(&scenario).unwrap();
     let own = vorrt_scenarios::Scenario::from_ron_str(&text, "crossing.ron").unwrap();
-    for step in 0..steps {
+    for step in 0..step_count {
         let row = lines[1 + step * vessels];
         assert_eq!(
             row.split(',').nth(1),
@@ -334,7 +347,7 @@ fn bad_logs_exit_2_without_panicking() {
             .unwrap()
             .lines()
             .filter(|line| !line.contains("13P7@h"))
-            .map(|line| format!("{line}\n"))
+            .flat_map(|line| [line, "\n"])
             .collect();
         std::fs::write(&statics, only_static).unwrap();
         vec![

@@ -3,6 +3,7 @@
 //! panic; a missing file exits 2; an empty target list is valid.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
 
+use std::fmt::Write as _;
 use std::path::Path;
 use std::process::{Command, Output};
 
@@ -140,14 +141,15 @@ fn duplicate_vessel_names_are_named() {
 
 #[test]
 fn more_than_max_targets_are_refused() {
-    let many: String = (0..=vorrt_scenarios::MAX_TARGETS)
-        .map(|index| {
-            format!(
-                "Vessel(name: \"T{index}\", start_nm: ({}, 2.0), course_deg: 0.0, speed_kn: 5.0, length_m: 50.0),\n",
-                f64::from(u32::try_from(index).unwrap()) * 0.2 - 25.0
-            )
-        })
-        .collect();
+    let many = (0..=vorrt_scenarios::MAX_TARGETS).fold(String::new(), |mut many, index| {
+        writeln!(
+            many,
+            "Vessel(name: \"T{index}\", start_nm: ({}, 2.0), course_deg: 0.0, speed_kn: 5.0, length_m: 50.0),",
+            f64::from(u32::try_from(index).unwrap()) * 0.2 - 25.0
+        )
+        .unwrap();
+        many
+    });
     assert_rejected(&GOOD.replacen(TS1, &many, 1), &["targets", "257", "256"]);
 }
 

@@ -53,9 +53,15 @@ fn histogram(
     let text = |error: &dyn std::fmt::Display| format!("{}: {error}", path.display());
     let high = values.iter().copied().fold(0.0, f64::max).max(1.0) * 1.0001;
     let high = marker.map_or(high, |m| high.max(m * 1.1));
+    #[expect(clippy::cast_precision_loss, reason = "BINS is a small constant")]
     let width = high / BINS as f64;
     let mut counts = [0u32; BINS];
     for value in values {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "floored at 0 and capped at BINS - 1: a bin index"
+        )]
         let bin = ((value / width).floor().max(0.0) as usize).min(BINS - 1);
         counts[bin] += 1;
     }
@@ -86,6 +92,7 @@ fn histogram(
                 .enumerate()
                 .filter(|(_, c)| **c > 0)
                 .map(|(bin, count)| {
+                    #[expect(clippy::cast_precision_loss, reason = "a bin index below BINS")]
                     let x0 = bin as f64 * width;
                     Rectangle::new([(x0, 0), (x0 + width, *count)], BLUE.mix(0.6).filled())
                 }),

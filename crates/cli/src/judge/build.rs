@@ -21,7 +21,7 @@ pub(crate) struct Options {
     pub(crate) tracks_file: String,
     /// Ownship's name (or MMSI) among the tracks.
     pub(crate) ownship: Option<String>,
-    /// The clearance d_th, metres (overrides the scenario's).
+    /// The clearance `d_th`, metres (overrides the scenario's).
     pub(crate) d_th_m: Option<f64>,
     /// The clock's step, seconds (default: the median step of the fixes).
     pub(crate) step_s: Option<f64>,
@@ -415,7 +415,12 @@ fn to_relative_times(tracks: &mut Tracks) -> Option<String> {
     for fix in tracks.tracks.iter_mut().flat_map(|track| &mut track.fixes) {
         fix.time_s -= base;
     }
-    time::OffsetDateTime::from_unix_timestamp_nanos((base * 1e9).round() as i128)
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a finite UNIX time in nanoseconds is far inside i128 (and the cast saturates)"
+    )]
+    let base_ns = (base * 1e9).round() as i128;
+    time::OffsetDateTime::from_unix_timestamp_nanos(base_ns)
         .ok()
         .map(vorrt_scenarios::geo::format_utc_time)
 }
@@ -431,7 +436,7 @@ fn vessel_inputs(
     assumptions: &mut Vec<String>,
 ) -> (Vec<VesselInput>, Vec<f64>) {
     let mut inputs = Vec::new();
-    let mut lengths_m = Vec::new();
+    let mut vessel_lengths_m = Vec::new();
     for (position, (track, vessel)) in tracks.iter().zip(vessels).enumerate() {
         let (length_m, from) = match (spec_of(scenario, track, position == 0), track.length_m) {
             (Some(spec), _) => (spec.length_m, "scenario"),
@@ -458,9 +463,9 @@ fn vessel_inputs(
             courses_from: how(sampled[position].courses_recorded),
             speeds_from: how(sampled[position].speeds_recorded),
         });
-        lengths_m.push(length_m);
+        vessel_lengths_m.push(length_m);
     }
-    (inputs, lengths_m)
+    (inputs, vessel_lengths_m)
 }
 
 /// The given scenario with the judged targets in track order: each its

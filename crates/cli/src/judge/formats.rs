@@ -1,11 +1,11 @@
-//! The other track formats: GeoJSON LineStrings with per-point times, and
+//! The other track formats: `GeoJSON` `LineStrings` with per-point times, and
 //! AIS logs (read by `vorrt-ais`).
 
 use crate::error::CliError;
 use crate::judge::tracks::{Collector, Fix, Place, Tracks, bad, unix_seconds};
 use geojson::{Feature, GeoJson, GeometryValue, JsonObject, JsonValue};
 
-/// The time of one point as a GeoJSON property gives it: a number of
+/// The time of one point as a `GeoJSON` property gives it: a number of
 /// seconds, or an ISO 8601 string (absolute).
 fn point_time(file: &str, where_: &str, value: &JsonValue) -> Result<(f64, bool), CliError> {
     match value {
@@ -26,7 +26,7 @@ fn point_time(file: &str, where_: &str, value: &JsonValue) -> Result<(f64, bool)
 
 /// The per-point times of a feature: `times_s` (seconds), else `coordTimes`
 /// or `times` (ISO 8601 strings or seconds), flattened for a
-/// MultiLineString whose times are nested per line.
+/// `MultiLineString` whose times are nested per line.
 fn feature_times(
     file: &str,
     label: &str,
@@ -51,7 +51,7 @@ fn feature_times(
         }
     }
     let mut absolute = None;
-    let mut times = Vec::with_capacity(flat.len());
+    let mut point_times = Vec::with_capacity(flat.len());
     for (index, value) in flat.into_iter().enumerate() {
         let (time_s, is_absolute) =
             point_time(file, &format!("{label}, property `{key}`[{index}]"), value)?;
@@ -61,9 +61,9 @@ fn feature_times(
                 format!("{label}, property `{key}` mixes ISO 8601 times and numbers"),
             ));
         }
-        times.push(time_s);
+        point_times.push(time_s);
     }
-    Ok((times, absolute.unwrap_or(false)))
+    Ok((point_times, absolute.unwrap_or(false)))
 }
 
 /// A feature's label for messages: its index and name.
@@ -71,7 +71,7 @@ fn label(index: usize, name: &str) -> String {
     format!("feature {index} ({name:?})")
 }
 
-/// The features of a GeoJSON text: those of a FeatureCollection, or the one Feature.
+/// The features of a `GeoJSON` text: those of a `FeatureCollection`, or the one Feature.
 fn geojson_features(file: &str, text: &str) -> Result<Vec<Feature>, CliError> {
     let geojson: GeoJson = text
         .parse()
@@ -139,8 +139,8 @@ fn lat_lon_fixes(
     Ok(fixes)
 }
 
-/// Reads GeoJSON: a FeatureCollection (or one Feature) of LineStrings or
-/// MultiLineStrings, one per vessel, with per-point times (see
+/// Reads `GeoJSON`: a `FeatureCollection` (or one Feature) of `LineStrings` or
+/// `MultiLineStrings`, one per vessel, with per-point times (see
 /// [`feature_times`]); `name` (else `vessel`, else `feature N`), optional
 /// `length_m`, `mmsi` and `role` (`ownship` marks the recording vessel).
 /// Other features (points, the closest approaches vorrt writes) are
@@ -331,6 +331,7 @@ mod tests {
 
     #[test]
     fn reads_an_ais_log_with_tag_block_times() {
+        #![expect(clippy::float_cmp, reason = "a whole-second tag block time, exact")]
         let text = "\\c:1700000000*5F\\!AIVDM,1,1,,A,13u?etgP2;0n9lPPwT`1U1B1P000,0*4F\n";
         let tracks = read_ais("t.nmea", text).unwrap();
         assert_eq!(tracks.tracks.len(), 1);

@@ -1,7 +1,7 @@
 //! `vorrt judge`: any planner's recorded tracks judged by the project's own
 //! evaluation.
 //!
-//! The tracks (`trajectory.csv`, GeoJSON with per-point times, or an AIS
+//! The tracks (`trajectory.csv`, `GeoJSON` with per-point times, or an AIS
 //! log) are read ([`tracks`], [`formats`]), put on one clock
 //! ([`resample`]) and rebuilt into the run record and scenario that
 //! `vorrt_scenarios::evaluate` reads ([`build`]); that one evaluation judges
@@ -35,6 +35,10 @@ pub(crate) enum TracksFormat {
     /// `time_s`/`time`, `vessel` and `east_m,north_m` or `lat_deg,lon_deg`).
     Csv,
     /// GeoJSON LineStrings with per-point times (`times_s`, `coordTimes` or `times`).
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     Geojson,
     /// An AIS log: NMEA 0183 !AIVDM/!AIVDO with NMEA 4.0 tag-block times.
     Ais,
@@ -44,11 +48,19 @@ pub(crate) enum TracksFormat {
 #[derive(Debug, Clone, Args)]
 pub(crate) struct JudgeArgs {
     /// The recorded tracks: trajectory.csv, GeoJSON or an AIS log.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     pub(crate) tracks: PathBuf,
     /// The scenario the tracks sail (RON): ownship's goal, the lengths,
     /// d_th and the rule constants [default: synthesized from the tracks:
     /// goal = ownship's last position, d_th 200 m, lengths from the tracks
     /// or --length-m].
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[arg(long, value_name = "SCENARIO.ron")]
     pub(crate) scenario: Option<PathBuf>,
     /// Ownship's name (or MMSI) among the tracks [default: the scenario's
@@ -62,6 +74,10 @@ pub(crate) struct JudgeArgs {
     #[arg(long, value_enum)]
     pub(crate) format: Option<TracksFormat>,
     /// The clearance d_th, metres [default: the scenario's, else 200].
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
     #[arg(long, value_name = "M")]
     pub(crate) d_th: Option<f64>,
     /// Resample every vessel at this step, seconds [default: keep the time

@@ -39,6 +39,10 @@ impl Prepared {
         let mut fixes = track.fixes.clone();
         fixes.sort_by(|a, b| a.time_s.total_cmp(&b.time_s));
         let before = fixes.len();
+        #[expect(
+            clippy::float_cmp,
+            reason = "only fixes with the very same time stamp are duplicates"
+        )]
         fixes.dedup_by(|later, earlier| later.time_s == earlier.time_s);
         let local = |place: Place| match (place, frame) {
             (Place::Local(position_m), _) => position_m,
@@ -194,19 +198,19 @@ pub(crate) fn clock(
     })
 }
 
-/// Where `time_s` falls among `times_s`: the fix at or before it and the
+/// Where `time_s` falls among `fix_times_s`: the fix at or before it and the
 /// fraction of the way to the next (0 at or beyond the last fix; the clock
 /// never leaves the vessel's span, so nothing is extrapolated).
-fn bracket(times_s: &[f64], time_s: f64) -> (usize, usize, f64) {
-    let after = times_s.partition_point(|fix_s| *fix_s <= time_s);
+fn bracket(fix_times_s: &[f64], time_s: f64) -> (usize, usize, f64) {
+    let after = fix_times_s.partition_point(|fix_s| *fix_s <= time_s);
     let before = after.saturating_sub(1);
-    match times_s.get(after) {
+    match fix_times_s.get(after) {
         Some(next_s) if after > 0 => {
-            let span_s = next_s - times_s[before];
+            let span_s = next_s - fix_times_s[before];
             (
                 before,
                 after,
-                ((time_s - times_s[before]) / span_s).clamp(0.0, 1.0),
+                ((time_s - fix_times_s[before]) / span_s).clamp(0.0, 1.0),
             )
         }
         _ => (before, before, 0.0),

@@ -38,7 +38,7 @@ pub(crate) struct Track {
     /// Its length overall, metres, when the file gives it.
     pub(crate) length_m: Option<f64>,
     /// Whether the file marks it as the recording vessel (`role: "ownship"`
-    /// in GeoJSON, `!AIVDO` in AIS).
+    /// in `GeoJSON`, `!AIVDO` in AIS).
     pub(crate) marked_ownship: bool,
     /// Its fixes, in file order.
     pub(crate) fixes: Vec<Fix>,
@@ -50,6 +50,10 @@ pub(crate) struct Tracks {
     /// `csv`, `geojson` or `ais`.
     pub(crate) format: &'static str,
     /// Every vessel, in the order it first appears in the file.
+    #[expect(
+        clippy::struct_field_names,
+        reason = "the file's tracks: one `Track` per vessel, as the readers name them"
+    )]
     pub(crate) tracks: Vec<Track>,
     /// Whether the times are absolute (UNIX seconds: ISO 8601 times, AIS
     /// tag blocks) rather than seconds from the start of a run.
@@ -311,7 +315,7 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
     })
 }
 
-/// Columns::new guarantees a time and a position column; this keeps the
+/// `Columns::new` guarantees a time and a position column; this keeps the
 /// match total without a panic.
 fn unreachable_columns<T>(file: &str) -> Result<T, CliError> {
     Err(bad(file, "line 1: missing time or position columns"))

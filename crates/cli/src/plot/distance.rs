@@ -1,9 +1,13 @@
 //! The `distance` plot: distance from ownship to each target over time.
 
-use super::*;
+use super::{
+    CLEARANCE_COLOUR, Chart, FAMILY, METRES_PER_NM, PlotData, Shift, clip_below, format_distance,
+    labelled, tick, to_text,
+};
+use plotters::prelude::*;
 
 /// Draws the distance plot of `data` on `root`: one line per target, the
-/// d_th line, and each closest approach marked.
+/// `d_th` line, and each closest approach marked.
 pub(super) fn draw_distance<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     data: &PlotData<'_>,
@@ -27,8 +31,8 @@ pub(super) fn draw_distance<DB: DrawingBackend>(
         .configure_mesh()
         .x_desc("time (min)")
         .y_desc("distance (m)")
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
+        .x_label_formatter(&|value| tick(*value))
+        .y_label_formatter(&|value| tick(*value))
         .label_style((FAMILY, 14))
         .axis_desc_style((FAMILY, 16))
         .bold_line_style(RGBColor(210, 210, 210))
@@ -77,8 +81,8 @@ fn distance_series(data: &PlotData<'_>, minutes: &[f64]) -> Vec<Vec<(f64, f64)>>
 }
 
 /// The top of the distance axis, metres: the largest distance, but no more
-/// than five times d_th or twice the largest closest approach (so that the
-/// approaches stay readable), and at least 1.5 d_th.
+/// than five times `d_th` or twice the largest closest approach (so that the
+/// approaches stay readable), and at least 1.5 `d_th`.
 fn y_max_m(data: &PlotData<'_>, series: &[Vec<(f64, f64)>]) -> f64 {
     let largest = series.iter().flatten().map(|p| p.1).fold(0.0_f64, f64::max);
     let largest_min = data
@@ -91,7 +95,7 @@ fn y_max_m(data: &PlotData<'_>, series: &[Vec<(f64, f64)>]) -> f64 {
         .max(1.0)
 }
 
-/// The dashed d_th line across the plot, in the series legend and labelled.
+/// The dashed `d_th` line across the plot, in the series legend and labelled.
 fn draw_clearance_line<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     data: &PlotData<'_>,

@@ -125,7 +125,7 @@ impl<'a> PlotData<'a> {
                 goal_nm: scenario
                     .targets
                     .get(index)
-                    .and_then(|spec| spec.goal_position_m())
+                    .and_then(vorrt_scenarios::VesselSpec::goal_position_m)
                     .map(nm),
                 evaluation: evaluation.targets.get(index),
             })
@@ -224,7 +224,7 @@ fn key_label<DB: DrawingBackend>(
 /// The two plots written beside `report.json`, each as SVG and PNG.
 #[derive(Debug, Clone, Copy)]
 enum Plot {
-    /// Every vessel's track, closest approaches, d_th and lanes.
+    /// Every vessel's track, closest approaches, `d_th` and lanes.
     Trajectories,
     /// Distance from ownship to each target over time.
     Distance,
@@ -412,6 +412,10 @@ fn marker_interval_min(duration_s: f64) -> f64 {
 fn triangle(course_rad: f64, size: f64) -> Vec<(i32, i32)> {
     let (dx, dy) = (course_rad.sin(), -course_rad.cos());
     let (px, py) = (-dy, dx);
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "pixel offsets of a marker a few pixels in size"
+    )]
     let point = |along: f64, side: f64| {
         (
             (along * dx + side * px).round() as i32,
@@ -465,7 +469,7 @@ fn labelled(targets: &[Track<'_>]) -> Vec<bool> {
 }
 
 /// An axis tick: whole numbers without decimals, others with up to two.
-fn tick(value: &f64) -> String {
+fn tick(value: f64) -> String {
     if value.abs() < 1e-9 {
         "0".to_owned()
     } else if (value - value.round()).abs() < 1e-6 {
@@ -528,6 +532,7 @@ mod tests {
 
     #[test]
     fn marker_interval_is_round() {
+        #![expect(clippy::float_cmp, reason = "the intervals are exact round numbers")]
         assert_eq!(marker_interval_min(30.0 * 60.0), 5.0);
         assert_eq!(marker_interval_min(60.0), 1.0);
     }

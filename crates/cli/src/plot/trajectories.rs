@@ -1,6 +1,11 @@
 //! The `trajectories` plot: tracks, closest approaches, lanes and the legend.
 
-use super::*;
+use super::{
+    Chart, FAMILY, LANE_COLOUR, METRES_PER_NM, OWNSHIP_COLOUR, PlotData, Shift, Track, View,
+    circle_points, clip_polygon, fit_view, format_distance, key_label, labelled,
+    marker_interval_min, tick, to_text, triangle,
+};
+use plotters::prelude::*;
 
 /// Draws the trajectories plot of `data` on `root`: the chart on the left,
 /// the legend on the right.
@@ -41,8 +46,8 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .y_desc("north (nm)")
         .x_labels(10)
         .y_labels(10)
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
+        .x_label_formatter(&|value| tick(*value))
+        .y_label_formatter(&|value| tick(*value))
         .label_style((FAMILY, 14))
         .axis_desc_style((FAMILY, 16))
         .bold_line_style(RGBColor(210, 210, 210))
@@ -114,7 +119,7 @@ fn draw_lanes<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The d_th circle around ownship at each target's closest approach.
+/// The `d_th` circle around ownship at each target's closest approach.
 fn draw_clearance_circles<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     data: &PlotData<'_>,
@@ -364,7 +369,7 @@ fn draw_legend<DB: DrawingBackend>(
 }
 
 /// The key to the chart's symbols, from `(x, bottom)` down: start, course
-/// marker, goal, closest approach, d_th, and traffic lanes when there are any.
+/// marker, goal, closest approach, `d_th`, and traffic lanes when there are any.
 fn draw_symbol_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     data: &PlotData<'_>,
