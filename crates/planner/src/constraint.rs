@@ -50,6 +50,7 @@
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
+use vorrt_jfs::Piece;
 
 /// What a piece of ownship's motion breaks, by a [`Constraint`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -120,6 +121,45 @@ pub struct Segment {
 }
 
 impl Segment {
+    /// The segment of `piece`, one piece of a leg that starts
+    /// `leg_start_elapsed_s` after the plan's start, with the margin its kind
+    /// carries: on a turn the leg's chord error (`piece_error_m`), while the
+    /// speed changes its timing error (`timing_error_m`), else none.
+    ///
+    /// ```
+    /// use vorrt_planner::constraint::Segment;
+    /// use vorrt_planner::{DVec2, Leg};
+    /// let leg = Leg::straight(DVec2::ZERO, 0.0, 1000.0, 5.0);
+    /// let piece = leg.pieces(100.0).nth(3).unwrap();
+    /// let segment = Segment::of_piece(&piece, 60.0, leg.piece_error_m(), leg.timing_error_m());
+    /// assert_eq!(segment.start_m, DVec2::new(0.0, 300.0));
+    /// assert_eq!(segment.start_elapsed_s, 120.0);
+    /// assert_eq!(segment.margin_m, 0.0);
+    /// ```
+    #[must_use]
+    pub fn of_piece(
+        piece: &Piece,
+        leg_start_elapsed_s: f64,
+        piece_error_m: f64,
+        timing_error_m: f64,
+    ) -> Self {
+        let margin_m = if piece.turning {
+            piece_error_m
+        } else if piece.transient() {
+            timing_error_m
+        } else {
+            0.0
+        };
+        Segment {
+            start_m: piece.start_m,
+            end_m: piece.end_m(),
+            margin_m,
+            start_elapsed_s: leg_start_elapsed_s + piece.elapsed_s,
+            duration_s: piece.duration_s,
+            course_rad: piece.course_rad,
+        }
+    }
+
     /// The distance from `point_m` to the segment, metres.
     ///
     /// ```

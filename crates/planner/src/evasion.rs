@@ -375,22 +375,13 @@ fn leg_min_distance_m(leg: &Leg, tracks: &[LinearTrack], own_length_m: f64, hori
 fn leg_keeps_constraint<C: Constraint>(leg: &Leg, constraint: &C) -> bool {
     let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
     leg.pieces(0.0).all(|piece| {
-        let margin_m = if piece.turning {
-            piece_error_m
-        } else if piece.transient() {
-            timing_error_m
-        } else {
-            0.0
-        };
         constraint
-            .check_segment(&Segment {
-                start_m: piece.start_m,
-                end_m: piece.end_m(),
-                margin_m,
-                start_elapsed_s: piece.elapsed_s,
-                duration_s: piece.duration_s,
-                course_rad: piece.course_rad,
-            })
+            .check_segment(&Segment::of_piece(
+                &piece,
+                0.0,
+                piece_error_m,
+                timing_error_m,
+            ))
             .is_ok()
     })
 }

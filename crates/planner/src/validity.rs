@@ -218,22 +218,9 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
             // The user's constraint (land, a no-go area, a lane) on the
             // curve sailed: a chord of a turn is up to the chord error off
             // the arc, a piece changing speed up to the timing error.
-            let margin_m = if piece.turning {
-                piece_error_m
-            } else if piece.transient() {
-                timing_error_m
-            } else {
-                0.0
-            };
+            let segment = Segment::of_piece(&piece, start_elapsed_s, piece_error_m, timing_error_m);
             self.constraint()
-                .check_segment(&Segment {
-                    start_m: piece.start_m,
-                    end_m: piece.end_m(),
-                    margin_m,
-                    start_elapsed_s: candidate.start_elapsed_s,
-                    duration_s: candidate.duration_s,
-                    course_rad: piece.course_rad,
-                })
+                .check_segment(&segment)
                 .map_err(RejectionCause::Constraint)?;
             if piece.transient() {
                 // A turn, or a change of speed, is judged as a manoeuvre by
@@ -243,7 +230,12 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 // as the manoeuvre is sailed, as the closed loop moves them at
                 // every step. While the speed changes, ownship is up to the
                 // timing error off the piece sailed at its mean velocity.
-                self.check_turning(&candidate, &state.latches, &state.alterations, margin_m)?;
+                self.check_turning(
+                    &candidate,
+                    &state.latches,
+                    &state.alterations,
+                    segment.margin_m,
+                )?;
             } else {
                 self.check(&candidate, &state.latches, &state.alterations)?;
             }
