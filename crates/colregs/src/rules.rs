@@ -19,7 +19,7 @@
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
-//! | a port turn toward a port-side vessel that makes it a risk | [`is_port_turn_toward_vessel`] | 2(a), 8(a), 17(c) |
+//! | a port turn toward a port-side vessel onto a risk of collision, crossing ahead of it | [`is_port_turn_toward_vessel`] | 2(a), 8(a), 17(c) |
 //! | ownship gives way in an encounter | [`gives_way`] | 16 |
 //! | ownship gives way to any target | [`giving_way_to_any`] | 16, 17 |
 //! | the give-way vessel inside the stand-on action range | [`within_action_range`] | 17(a)(ii) |
@@ -403,10 +403,15 @@ pub fn is_on_port_side(
 /// port side of the course before ([`is_on_port_side`]) and lies forward of
 /// the beam on the new course, and on the new course it is a risk of
 /// collision ([`assess_risk`](crate::assess_risk): inside the MTD, a closest
-/// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)).
-/// Crossing ahead of it within that distance is such an approach: when
-/// ownship crosses its bow the range is at least the CPA. This is the
-/// return toward the goal that swings onto a vessel crossing from port
+/// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)) that
+/// ownship would resolve by crossing ahead of it
+/// ([`crosses_ahead`](crate::crosses_ahead)): the vessel is put on a
+/// collision course, to be crossed ahead of within the risk distance. A
+/// return that passes astern of the vessel is not one (the clearance checks
+/// keep `d_th` there), nor is a vessel that ownship overtakes, or that
+/// overtakes it, on the new course: rule 13 keeps them apart (the
+/// clearance, and no cutting across the overtaken vessel's bow). This is
+/// the return toward the goal that swings onto a vessel crossing from port
 /// after an alteration to starboard for another (issue 24), which a latch
 /// made only on the new course would judge as a stand-on encounter. The
 /// planner refuses such a leg and the evaluation finds it, with this one
@@ -417,13 +422,16 @@ pub fn is_on_port_side(
 /// use glam::DVec2;
 /// let params = RuleParameters::default();
 /// // Ownship has come back from 035 to 357; a vessel 2.8 nm off the port
-/// // bow heads east across its new course (CPA 360 m).
+/// // bow heads east across its new course, to be crossed 670 m ahead.
 /// let own = VesselState::new(DVec2::ZERO, 357f64.to_radians(), 6.0, 100.0);
 /// let crossing = VesselState::new(DVec2::new(-4000.0, 3300.0), 90f64.to_radians(), 6.0, 100.0);
 /// assert!(is_port_turn_toward_vessel(35f64.to_radians(), &own, &crossing, &params));
 /// // Held on 035 the same vessel passes 1.1 nm off: no turn, no finding.
 /// let held = VesselState { course_rad: 35f64.to_radians(), ..own };
 /// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &held, &crossing, &params));
+/// // Coming back to 330 instead passes 860 m astern of it: no finding.
+/// let astern = VesselState { course_rad: 330f64.to_radians(), ..own };
+/// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &astern, &crossing, &params));
 /// ```
 #[must_use]
 pub fn is_port_turn_toward_vessel(
@@ -441,6 +449,16 @@ pub fn is_port_turn_toward_vessel(
     forward_of_beam
         && is_on_port_side(own.position_m, course_before_rad, target.position_m)
         && crate::assess_risk(own, target, parameters).at_risk
+        && crate::crosses_ahead(
+            own.position_m,
+            own.velocity_mps(),
+            target.position_m,
+            target.velocity_mps(),
+        )
+        && !matches!(
+            crate::classify(own, target, parameters),
+            Encounter::Overtaking | Encounter::BeingOvertaken
+        )
 }
 
 /// Whether ownship gives way in `encounter` (head-on, crossing give-way,

@@ -110,7 +110,8 @@
 //!   (rules 2(a), 8(a), 17(c)) when risk arose just after a port turn toward
 //!   the target, on the port side of the course held before the turn (a
 //!   window before the latch, or before the turn then under way) and
-//!   forward of the beam of the new one, that made it a risk
+//!   forward of the beam of the new one, that made it a risk to be crossed
+//!   ahead of
 //!   ([`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
 //!
 //! ## Scores (each in `[0, 1]`, 1 = best)
