@@ -406,7 +406,10 @@ pub fn is_on_port_side(
 /// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)) that
 /// ownship would resolve by crossing ahead of it
 /// ([`crosses_ahead`](crate::crosses_ahead)): the vessel is put on a
-/// collision course, to be crossed ahead of within the risk distance. A
+/// collision course, to be crossed ahead of within the risk distance,
+/// where on the course held before it was no risk: the turn made the
+/// danger (a vessel already a risk is an encounter in force, whose own
+/// rules judge the turn: 14, 15, 17(a)(i), 17(c)). A
 /// return that passes astern of the vessel is not one (the clearance checks
 /// keep `d_th` there), nor is a vessel that ownship overtakes, or that
 /// overtakes it, on the new course: rule 13 keeps them apart (the
@@ -455,6 +458,15 @@ pub fn is_port_turn_toward_vessel(
             target.position_m,
             target.velocity_mps(),
         )
+        && !crate::assess_risk(
+            &crate::VesselState {
+                course_rad: course_before_rad,
+                ..*own
+            },
+            target,
+            parameters,
+        )
+        .at_risk
         && !matches!(
             crate::classify(own, target, parameters),
             Encounter::Overtaking | Encounter::BeingOvertaken
