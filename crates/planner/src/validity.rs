@@ -29,7 +29,7 @@ use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_steady};
-use vorrt_jfs::{Leg, LinearTrack};
+use vorrt_jfs::{Leg, LinearTrack, Piece};
 
 /// The encounters in force at one point of a branch: per target, the latch
 /// (rules 13-17) and what ownship carries for it ([`alteration_made`]: for a
@@ -207,6 +207,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         } else {
             leg.start_course_rad
         };
+        let mut settled = false;
         for piece in leg.pieces(self.config().step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -225,16 +226,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
             } else {
                 0.0
             };
-            self.constraint()
-                .check_segment(&Segment {
-                    start_m: piece.start_m,
-                    end_m: piece.end_m(),
-                    margin_m,
-                    start_elapsed_s: candidate.start_elapsed_s,
-                    duration_s: candidate.duration_s,
-                    course_rad: piece.course_rad,
-                })
-                .map_err(RejectionCause::Constraint)?;
+            check_constraint(self.constraint(), &piece, &candidate, margin_m)?;
             if piece.transient() {
                 // A turn, or a change of speed, is judged as a manoeuvre by
                 // the course and speed it settles on (rule 8(b)); but a
@@ -245,6 +237,12 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 // timing error off the piece sailed at its mean velocity.
                 self.check_turning(&candidate, &state.latches, &state.alterations, margin_m)?;
             } else {
+                if !settled {
+                    // The course the leg's turn settles on, judged against
+                    // every vessel as the turn is seen (issue 24).
+                    settled = true;
+                    self.check_settled_turn(before_course_rad, &candidate)?;
+                }
                 self.check(&candidate, &state.latches, &state.alterations)?;
             }
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
@@ -286,6 +284,26 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         }
         Ok(())
     }
+}
+
+/// The user's constraint on one piece of a leg, `margin_m` off the curve
+/// sailed.
+fn check_constraint<C: Constraint>(
+    constraint: &C,
+    piece: &Piece,
+    candidate: &Move,
+    margin_m: f64,
+) -> Result<(), RejectionCause> {
+    constraint
+        .check_segment(&Segment {
+            start_m: piece.start_m,
+            end_m: piece.end_m(),
+            margin_m,
+            start_elapsed_s: candidate.start_elapsed_s,
+            duration_s: candidate.duration_s,
+            course_rad: piece.course_rad,
+        })
+        .map_err(RejectionCause::Constraint)
 }
 
 /// Checks `legs`, sailed one after the other from `problem`'s start with its
