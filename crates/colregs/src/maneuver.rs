@@ -52,11 +52,17 @@ pub enum ManeuverViolation {
     /// A give-way vessel easing back from its readily apparent alteration
     /// before the other vessel is past (rule 8(d): until finally past and clear).
     AlterationNotHeld,
+    /// A turn to port toward a vessel on the port side forward of the beam
+    /// that makes it a risk of collision, such as a return toward the goal
+    /// onto a vessel crossing from port (rule 17(c) for a stand-on vessel,
+    /// good seamanship, rules 2(a) and 8(a), otherwise;
+    /// [`rules::is_port_turn_toward_vessel`]).
+    PortTurnTowardVessel,
 }
 
 impl ManeuverViolation {
     /// Every violation, in a fixed order.
-    pub const ALL: [ManeuverViolation; 9] = [
+    pub const ALL: [ManeuverViolation; 10] = [
         ManeuverViolation::PortTurn,
         ManeuverViolation::StarboardPassing,
         ManeuverViolation::CrossingAhead,
@@ -66,6 +72,7 @@ impl ManeuverViolation {
         ManeuverViolation::InsufficientAlteration,
         ManeuverViolation::LateAction,
         ManeuverViolation::AlterationNotHeld,
+        ManeuverViolation::PortTurnTowardVessel,
     ];
 
     /// The rule broken, as text.
@@ -96,6 +103,9 @@ impl ManeuverViolation {
             }
             ManeuverViolation::AlterationNotHeld => {
                 "give-way alteration eased back before the other vessel is past (rule 8(d))"
+            }
+            ManeuverViolation::PortTurnTowardVessel => {
+                "turn to port toward a vessel on the port side forward of the beam, onto a risk of collision (rules 2(a), 8(a), 17(c))"
             }
         }
     }

@@ -19,6 +19,7 @@
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
+//! | a port turn toward a port-side vessel onto a risk of collision, crossing ahead of it | [`is_port_turn_toward_vessel`] | 2(a), 8(a), 17(c) |
 //! | ownship gives way in an encounter | [`gives_way`] | 16 |
 //! | ownship gives way to any target | [`giving_way_to_any`] | 16, 17 |
 //! | the give-way vessel inside the stand-on action range | [`within_action_range`] | 17(a)(ii) |
@@ -392,6 +393,84 @@ pub fn is_on_port_side(
     target_position_m: DVec2,
 ) -> bool {
     angle::relative_bearing(own_position_m, reference_course_rad, target_position_m) > PI
+}
+
+/// Rule 17(c) for a stand-on vessel, good seamanship (rules 2(a), 8(a))
+/// for any: whether ownship, having turned from `course_before_rad` (the
+/// course it held before the turn, as an observer saw it) to its present
+/// course (`own`), turned to port **toward** `target` and so put it in
+/// danger: the turn is to port ([`is_port_turn`]), the target lay on the
+/// port side of the course before ([`is_on_port_side`]) and lies forward of
+/// the beam on the new course, and on the new course it is a risk of
+/// collision ([`assess_risk`](crate::assess_risk): inside the MTD, a closest
+/// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)) that
+/// ownship would resolve by crossing ahead of it
+/// ([`crosses_ahead`](crate::crosses_ahead)): the vessel is put on a
+/// collision course, to be crossed ahead of within the risk distance,
+/// where on the course held before it was no risk: the turn made the
+/// danger (a vessel already a risk is an encounter in force, whose own
+/// rules judge the turn: 14, 15, 17(a)(i), 17(c)). A
+/// return that passes astern of the vessel is not one (the clearance checks
+/// keep `d_th` there), nor is a vessel that ownship overtakes, or that
+/// overtakes it, on the new course: rule 13 keeps them apart (the
+/// clearance, and no cutting across the overtaken vessel's bow). This is
+/// the return toward the goal that swings onto a vessel crossing from port
+/// after an alteration to starboard for another (issue 24), which a latch
+/// made only on the new course would judge as a stand-on encounter. The
+/// planner refuses such a leg and the evaluation finds it, with this one
+/// predicate.
+///
+/// ```
+/// use vorrt_colregs::{rules::is_port_turn_toward_vessel, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// // Ownship has come back from 035 to 357; a vessel 2.8 nm off the port
+/// // bow heads east across its new course, to be crossed 670 m ahead.
+/// let own = VesselState::new(DVec2::ZERO, 357f64.to_radians(), 6.0, 100.0);
+/// let crossing = VesselState::new(DVec2::new(-4000.0, 3300.0), 90f64.to_radians(), 6.0, 100.0);
+/// assert!(is_port_turn_toward_vessel(35f64.to_radians(), &own, &crossing, &params));
+/// // Held on 035 the same vessel passes 1.1 nm off: no turn, no finding.
+/// let held = VesselState { course_rad: 35f64.to_radians(), ..own };
+/// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &held, &crossing, &params));
+/// // Coming back to 330 instead passes 860 m astern of it: no finding.
+/// let astern = VesselState { course_rad: 330f64.to_radians(), ..own };
+/// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &astern, &crossing, &params));
+/// ```
+#[must_use]
+pub fn is_port_turn_toward_vessel(
+    course_before_rad: f64,
+    own: &crate::VesselState,
+    target: &crate::VesselState,
+    parameters: &RuleParameters,
+) -> bool {
+    let turn = course_change_rad(course_before_rad, own.course_rad);
+    if !is_port_turn(turn, parameters) || !within_mtd(own.range_to(target), parameters) {
+        return false;
+    }
+    let bearing_now = angle::relative_bearing(own.position_m, own.course_rad, target.position_m);
+    let forward_of_beam = !(0.5 * PI..=1.5 * PI).contains(&bearing_now);
+    forward_of_beam
+        && is_on_port_side(own.position_m, course_before_rad, target.position_m)
+        && crate::assess_risk(own, target, parameters).at_risk
+        && crate::crosses_ahead(
+            own.position_m,
+            own.velocity_mps(),
+            target.position_m,
+            target.velocity_mps(),
+        )
+        && !crate::assess_risk(
+            &crate::VesselState {
+                course_rad: course_before_rad,
+                ..*own
+            },
+            target,
+            parameters,
+        )
+        .at_risk
+        && !matches!(
+            crate::classify(own, target, parameters),
+            Encounter::Overtaking | Encounter::BeingOvertaken
+        )
 }
 
 /// Whether ownship gives way in `encounter` (head-on, crossing give-way,

@@ -105,6 +105,7 @@ impl RejectionCause {
                 ManeuverViolation::InsufficientAlteration => "insufficient_alteration",
                 ManeuverViolation::LateAction => "late_action",
                 ManeuverViolation::AlterationNotHeld => "alteration_not_held",
+                ManeuverViolation::PortTurnTowardVessel => "port_turn_toward_vessel",
             },
             RejectionCause::Constraint(violation) => violation.key(),
         }

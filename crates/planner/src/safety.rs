@@ -27,10 +27,12 @@ use crate::config::{Compliance, PlannerConfig};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
 use glam::DVec2;
-use vorrt_colregs::rules::{acting_for_any, may_act};
+use vorrt_colregs::rules::{
+    acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel, may_act,
+};
 use vorrt_colregs::{
-    CandidateMotion, EncounterLatch, Role, VesselState, check_action, check_alteration,
-    check_heading, check_motion,
+    CandidateMotion, EncounterLatch, ManeuverViolation, Role, VesselState, check_action,
+    check_alteration, check_heading, check_motion,
 };
 use vorrt_geometry::VelocityObstacle;
 use vorrt_geometry::cpa::cpa_clamped;
@@ -293,6 +295,50 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 alterations.get(index).copied().unwrap_or(0.0),
             )
             .map_err(RejectionCause::Colregs)?;
+        }
+        Ok(())
+    }
+
+    /// Checks the course a turn settles on against every vessel, latched or
+    /// not, as an observer judges the turn (rules 2(a), 8(a), 17(c)): a turn
+    /// to port from `course_before_rad` (the course held before the turn)
+    /// toward a vessel on the port side forward of the beam that makes it a
+    /// risk of collision to be crossed ahead of, where on the course before
+    /// it was none ([`is_port_turn_toward_vessel`]), creates a new danger,
+    /// such as a return toward the goal onto a vessel crossing from port
+    /// (issue 24; decision 28). `candidate` is the first piece on the
+    /// settled course; the manoeuvre search then holds the alteration
+    /// longer, or passes astern of the vessel.
+    ///
+    /// # Errors
+    /// [`ManeuverViolation::PortTurnTowardVessel`].
+    pub fn check_settled_turn(
+        &self,
+        course_before_rad: f64,
+        candidate: &Move,
+    ) -> Result<(), RejectionCause> {
+        let rules = &self.config.rules;
+        if self.config.compliance == Compliance::SafetyOnly
+            || !is_port_turn(
+                course_change_rad(course_before_rad, candidate.course_rad),
+                rules,
+            )
+        {
+            return Ok(());
+        }
+        let own = VesselState {
+            position_m: candidate.start_m,
+            course_rad: candidate.course_rad,
+            speed_mps: candidate.velocity_mps.length(),
+            ..self.ownship
+        };
+        for track in self.tracks {
+            let target = track.state_at(candidate.start_elapsed_s);
+            if is_port_turn_toward_vessel(course_before_rad, &own, &target, rules) {
+                return Err(RejectionCause::Colregs(
+                    ManeuverViolation::PortTurnTowardVessel,
+                ));
+            }
         }
         Ok(())
     }

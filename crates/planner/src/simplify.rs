@@ -23,8 +23,10 @@
 //! starboard (or holding on) at service speed is valid, the same at reduced
 //! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); scenario-based MPC's speed
 //! factors),
-//! then the alterations to port. The branch is what is left when no such
-//! manoeuvre is valid, as among several vessels.
+//! then the alterations to port. Where the leg to the goal would turn to
+//! port onto a vessel crossing from port (decision 28), a course astern of
+//! it is tried before the next, longer hold. The branch is what is left
+//! when no such manoeuvre is valid, as among several vessels.
 //!
 //! From the planner's root, before any tree, where no single alteration
 //! held can be sailed, [`hold_then_alter`] tries the manoeuvres of two
@@ -37,9 +39,10 @@
 //! the rate of [`Speeds`]: the leg to the goal, and the legs along the
 //! branch, settle at the service speed.
 
+use crate::plan::RejectionCause;
 use crate::validity::{EncounterState, MotionValidator};
 use glam::DVec2;
-use vorrt_colregs::Role;
+use vorrt_colregs::{ManeuverViolation, Role};
 use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, MotionModel, Pose};
 
@@ -172,7 +175,7 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
                 end_elapsed_s: elapsed_s,
                 state: state.clone(),
             };
-            if let Some((hold, back)) = alter_hold_return(
+            if let Some(manoeuvre) = alter_hold_return(
                 model,
                 validator,
                 &from,
@@ -180,8 +183,7 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
                 points[last],
                 Alterations::Mariners,
             ) {
-                legs.push(hold);
-                legs.push(back);
+                legs.extend(manoeuvre);
                 break;
             }
         }
@@ -258,7 +260,9 @@ impl Alterations {
 /// the service speed, hold it for one of [`HOLD_M`], then one leg to the
 /// goal at service speed" that the validator accepts, trying the
 /// alterations and speeds of `alterations` in order and for each the
-/// shortest hold first. The two legs, or `None`.
+/// shortest hold first. The hold and the return
+/// ([`return_to_goal`]: the leg to the goal, or a course astern of a vessel
+/// then that leg), or `None`.
 ///
 /// A reduced speed is held until it is reached (a speed change is readily
 /// apparent only once made: rule 8(b), half the speed) and until every
@@ -271,7 +275,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     speeds: Speeds,
     goal_m: DVec2,
     alterations: Alterations,
-) -> Option<(SimplifiedLeg, SimplifiedLeg)> {
+) -> Option<Vec<SimplifiedLeg>> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
     for (alteration_deg, factor) in alterations.order() {
@@ -295,30 +299,77 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
             if factor < 1.0 && !reduction_held(&hold, &after_hold) {
                 continue;
             }
-            let hold_end_s = from.end_elapsed_s + hold.duration_s();
-            let Some(back) =
-                model.steer(hold.end_pose(), goal_m, speeds.service_mps, f64::INFINITY)
-            else {
+            let hold = SimplifiedLeg {
+                end_elapsed_s: from.end_elapsed_s + hold.duration_s(),
+                leg: hold,
+                state: after_hold,
+            };
+            if let Some(back) = return_to_goal(model, validator, &hold, speeds, goal_m) {
+                return Some(std::iter::once(hold).chain(back).collect());
+            }
+        }
+    }
+    None
+}
+
+/// The courses to port of the goal's bearing that a return refused for
+/// turning to port onto a vessel tries instead, degrees: to pass astern of
+/// the vessel it would have crossed ahead of.
+const ASTERN_DEG: [f64; 3] = [15.0, 30.0, 45.0];
+
+/// How far a course astern of a vessel ([`ASTERN_DEG`]) is held before the
+/// leg to the goal, metres, shortest first.
+const ASTERN_HOLD_M: [f64; 3] = [1000.0, 2000.0, 4000.0];
+
+/// From the end of `hold`, the return toward the goal the validator
+/// accepts: one leg to the goal; or, where that leg would turn to port onto
+/// a vessel on the port side, to cross ahead of it
+/// ([`ManeuverViolation::PortTurnTowardVessel`](vorrt_colregs::ManeuverViolation::PortTurnTowardVessel):
+/// rules 2(a), 8(a), 17(c)), a course further to port held to pass astern
+/// of it ([`ASTERN_DEG`], [`ASTERN_HOLD_M`], smallest first), then the leg
+/// to the goal. A longer hold of the alteration is the caller's next try.
+fn return_to_goal<M: MotionModel, V: MotionValidator>(
+    model: &M,
+    validator: &V,
+    hold: &SimplifiedLeg,
+    speeds: Speeds,
+    goal_m: DVec2,
+) -> Option<Vec<SimplifiedLeg>> {
+    let sail = |from: &SimplifiedLeg, leg: Leg| {
+        let leg = leg.from_speed(from.leg.end_speed_mps(), speeds.change_mps2);
+        let mut state = from.state.clone();
+        validator
+            .validate(&leg, from.end_elapsed_s, &mut state)
+            .map(|()| SimplifiedLeg {
+                end_elapsed_s: from.end_elapsed_s + leg.duration_s(),
+                leg,
+                state,
+            })
+    };
+    let to_goal = |from: &SimplifiedLeg| {
+        model.steer(
+            from.leg.end_pose(),
+            goal_m,
+            speeds.service_mps,
+            f64::INFINITY,
+        )
+    };
+    match sail(hold, to_goal(hold)?) {
+        Ok(back) => return Some(vec![back]),
+        Err(RejectionCause::Colregs(ManeuverViolation::PortTurnTowardVessel)) => {}
+        Err(_) => return None,
+    }
+    let pose = hold.leg.end_pose();
+    let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
+    for offset_deg in ASTERN_DEG {
+        let course_rad = angle::normalize_2pi(goal_course_rad - offset_deg.to_radians());
+        for hold_m in ASTERN_HOLD_M {
+            let astern = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
+            let Ok(astern) = sail(hold, astern) else {
                 continue;
             };
-            let back = back.from_speed(hold.end_speed_mps(), speeds.change_mps2);
-            let mut after_back = after_hold.clone();
-            if validator
-                .validate(&back, hold_end_s, &mut after_back)
-                .is_ok()
-            {
-                return Some((
-                    SimplifiedLeg {
-                        leg: hold,
-                        end_elapsed_s: hold_end_s,
-                        state: after_hold,
-                    },
-                    SimplifiedLeg {
-                        end_elapsed_s: hold_end_s + back.duration_s(),
-                        leg: back,
-                        state: after_back,
-                    },
-                ));
+            if let Some(back) = to_goal(&astern).and_then(|leg| sail(&astern, leg).ok()) {
+                return Some(vec![astern, back]);
             }
         }
     }
@@ -402,10 +453,10 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
                 leg: hold,
                 state: after,
             };
-            if let Some((alter, back)) =
+            if let Some(rest) =
                 alter_hold_return(model, validator, &first_leg, speeds, goal_m, second)
             {
-                return Some(vec![first_leg, alter, back]);
+                return Some(std::iter::once(first_leg).chain(rest).collect());
             }
         }
     }

@@ -207,6 +207,11 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         } else {
             leg.start_course_rad
         };
+        // An observer judging course over ground over a window sees the
+        // turn for a window after it ends, and a new encounter is judged
+        // against the course a window before it arose: two windows.
+        let settled_until_s =
+            start_elapsed_s + leg.turn_duration_s() + 2.0 * STEADY_COURSE_WINDOW_S;
         for piece in leg.pieces(self.config().step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -237,6 +242,12 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                     segment.margin_m,
                 )?;
             } else {
+                if candidate.start_elapsed_s <= settled_until_s {
+                    // The course the leg's turn settles on, judged against
+                    // every vessel while an observer still sees the turn
+                    // (decision 28).
+                    self.check_settled_turn(before_course_rad, &candidate)?;
+                }
                 self.check(&candidate, &state.latches, &state.alterations)?;
             }
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;

@@ -16,7 +16,8 @@
 //! The case count is kept small (32) so the debug-build test stays quick;
 //! set `VORRT_HEAVY_TESTS=1` for a heavier run (512 cases). The properties
 //! of standing on and of changing speed are in `properties_stand_on.rs`; the
-//! helpers both share in `common`.
+//! helpers both share in `common`. The last property (issue 24) checks
+//! that no plan turns to port onto a vessel crossing from port.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, missing_docs)]
 
 mod common;
@@ -24,6 +25,7 @@ mod common;
 use common::*;
 use glam::DVec2;
 use proptest::prelude::*;
+use std::f64::consts::PI;
 use std::time::{Duration, Instant};
 use vorrt_colregs::{Encounter, VesselState};
 use vorrt_geometry::angle;
@@ -457,4 +459,226 @@ proptest! {
             "{reported} vs sampled {sampled}, margin {}", track.then_margin_m
         );
     }
+}
+
+// Property: no plan turns to port onto a vessel on its port side (issue
+// 24). Ownship at the origin heading north must give way to a vessel
+// crossing from starboard (a starboard alteration, then a return toward
+// the goal) while one to three vessels cross its route from port. Every
+// port turn of every plan found is checked *independently* of the
+// planner's checker, on the plan as sailed (sampled every second) and the
+// targets' predicted motion, with this file's own geometry: where a port
+// turn ends, no target that lay on the port side of the course held before
+// it, forward of the beam of the new course, within the MTD, neither
+// overtaken nor overtaking, and no risk on the course before (the turn
+// made the danger), is on a closest approach ahead under the risk
+// distance that ownship would resolve by crossing ahead of it (rules 2(a),
+// 8(a), 17(c)). Margins of 50 m on the CPA and 100 m on the MTD keep a
+// sample taken a second from the planner's piece from deciding the case.
+//
+// The case count is that of the other properties (`common::cases`: 32,
+// 512 with `VORRT_HEAVY_TESTS=1`).
+
+/// A vessel crossing ownship's route from port: on `course_deg` (roughly
+/// east) at `speed_kn`, reaching the point `cross_m` metres up the route
+/// `cross_s` seconds from the start, `offset_m` off it along its own course
+/// (positive: it is that far past the point then).
+fn from_port(
+    course_deg: f64,
+    speed_kn: f64,
+    cross_m: f64,
+    cross_s: f64,
+    offset_m: f64,
+) -> TargetState {
+    let course = course_deg.to_radians();
+    let velocity = angle::velocity(course, speed_kn * KNOT);
+    let heading = velocity.normalize();
+    let start = DVec2::new(0.0, cross_m) + heading * offset_m - velocity * cross_s;
+    TargetState::constant_velocity(VesselState::new(start, course, speed_kn * KNOT, 120.0))
+}
+
+/// The encounters: a crossing give-way vessel from starboard on a collision
+/// course (`collision_course`), and one to three vessels crossing from port.
+fn traffic() -> impl Strategy<Value = PlanningProblem> {
+    (
+        9.0f64..14.0, // ownship speed, knots
+        -6.0f64..6.0, // the starboard vessel's course jitter, degrees
+        3.0f64..4.5,  // its initial range, nautical miles
+        prop::collection::vec(
+            (
+                60.0f64..120.0,     // course, degrees
+                8.0f64..16.0,       // speed, knots
+                3000.0f64..9000.0,  // where it crosses the route, metres north
+                600.0f64..1800.0,   // when, seconds
+                -1500.0f64..1500.0, // how far past the crossing point then, metres
+            ),
+            1..=3,
+        ),
+    )
+        .prop_map(|(own_kn, jitter_deg, range_nm, port)| {
+            let own_speed = own_kn * KNOT;
+            let base = collision_course(own_speed, 270.0 + jitter_deg, own_speed, range_nm, 0.0);
+            let mut targets = base.targets.clone();
+            targets.extend(
+                port.into_iter()
+                    .map(|(course, speed, cross_m, cross_s, offset_m)| {
+                        from_port(course, speed, cross_m, cross_s, offset_m)
+                    }),
+            );
+            PlanningProblem::new(base.ownship, base.goal_m, targets)
+        })
+}
+
+/// Each port turn of the plan as sailed: `(course before, index of the
+/// sample where it ends)`, turns of more than 2° only.
+fn port_turns(sailed: &[(f64, DVec2, f64)]) -> Vec<(f64, usize)> {
+    let mut turns = Vec::new();
+    let mut start: Option<usize> = None;
+    for index in 1..sailed.len() {
+        let turn = angle::signed_turn(sailed[index - 1].2, sailed[index].2);
+        match (start, turn < -1e-6) {
+            (None, true) => start = Some(index - 1),
+            (Some(from), false) => {
+                if angle::signed_turn(sailed[from].2, sailed[index].2) < -2f64.to_radians() {
+                    turns.push((sailed[from].2, index));
+                }
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    turns
+}
+
+/// Whether ownship at `own_m` on `course` at `own_velocity`, having turned
+/// to port from `before`, is headed to cross ahead of `target` within the
+/// risk distance, as this file judges it (see the module documentation).
+fn turned_onto(
+    before: f64,
+    own_m: DVec2,
+    course: f64,
+    own_velocity: DVec2,
+    target: &VesselState,
+) -> bool {
+    let rules = config().rules;
+    let relative = target.position_m - own_m;
+    let bearing =
+        |from_course: f64| angle::normalize_2pi(angle::unit_to_course(relative) - from_course);
+    let on_port_side_before = bearing(before) > PI;
+    let ahead_of_beam_now = bearing(course) < 0.5 * PI || bearing(course) > 1.5 * PI;
+    // Overtaking either way: one vessel more than 22.5° abaft the other's beam.
+    let abaft = |position: DVec2, of: &VesselState| {
+        let seen =
+            angle::normalize_2pi(angle::unit_to_course(position - of.position_m) - of.course_rad);
+        seen > 112.5f64.to_radians() && seen < 247.5f64.to_radians()
+    };
+    let own_state = VesselState::new(own_m, course, own_velocity.length(), 100.0);
+    let overtaking = abaft(own_m, target) || abaft(target.position_m, &own_state);
+    // The closest approach ahead if both hold their velocities.
+    let closest = |own_velocity: DVec2| {
+        let relative_velocity = target.velocity_mps() - own_velocity;
+        let speed2 = relative_velocity.length_squared();
+        let t_cpa = if speed2 > 0.0 {
+            -relative.dot(relative_velocity) / speed2
+        } else {
+            0.0
+        };
+        (t_cpa, (relative + relative_velocity * t_cpa).length())
+    };
+    let relative_velocity = target.velocity_mps() - own_velocity;
+    let (t_cpa, cpa_m) = closest(own_velocity);
+    // Already a risk on the course before: an encounter whose own rules
+    // judge the turn, not a danger the turn made.
+    let (t_before, cpa_before_m) = closest(angle::velocity(before, own_velocity.length()));
+    let risk_before = t_before > 0.0 && cpa_before_m < rules.risk_cpa_m + 50.0;
+    // Crossing ahead: in the target's frame ownship's track meets its bow ray.
+    let heading = target.velocity_mps().normalize_or_zero();
+    let own_relative = -relative;
+    let drift = heading.perp_dot(-relative_velocity);
+    let crosses_ahead = drift != 0.0 && {
+        let time = -heading.perp_dot(own_relative) / drift;
+        time >= 0.0 && heading.dot(own_relative - relative_velocity * time) > 0.0
+    };
+    on_port_side_before
+        && !risk_before
+        && ahead_of_beam_now
+        && !overtaking
+        && relative.length() < rules.mtd_m - 100.0
+        && t_cpa > 0.0
+        && cpa_m < rules.risk_cpa_m - 50.0
+        && crosses_ahead
+}
+
+/// The first port turn of `plan` onto a target, as `(turn end time, target
+/// index)`.
+fn turn_onto_a_vessel(plan: &Plan, problem: &PlanningProblem) -> Option<(f64, usize)> {
+    let sailed = sailed(plan);
+    let first = plan.waypoints[0].time_s;
+    port_turns(&sailed).into_iter().find_map(|(before, end)| {
+        let (time, own_m, course) = sailed[end];
+        let next = sailed.get(end + 1).copied().unwrap_or(sailed[end]);
+        let own_velocity = if next.0 > time {
+            (next.1 - own_m) / (next.0 - time)
+        } else {
+            angle::velocity(course, problem.ownship.speed_mps)
+        };
+        problem
+            .targets
+            .iter()
+            .enumerate()
+            .find_map(|(index, target)| {
+                let vessel = target.predict(time - first).vessel;
+                turned_onto(before, own_m, course, own_velocity, &vessel).then_some((time, index))
+            })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
+
+    #[test]
+    fn no_plan_turns_to_port_onto_a_vessel_on_its_port_side(problem in traffic(), seed in 0u64..1000) {
+        let mut planner = Planner::new(config()).unwrap();
+        let plan = match planner.plan(&problem, seed) {
+            Ok(plan) => plan,
+            Err(
+                PlannerError::NoSafePath { .. }
+                | PlannerError::NodeBudgetTooSmall { .. }
+                | PlannerError::BudgetExhausted { .. },
+            ) => return Ok(()),
+            Err(other) => return Err(TestCaseError::fail(other.to_string())),
+        };
+        let found = turn_onto_a_vessel(&plan, &problem);
+        prop_assert!(
+            found.is_none(),
+            "port turn onto target {:?}; legs {:?}",
+            found,
+            plan.legs.iter().map(|leg| leg.turn_rad.to_degrees().round()).collect::<Vec<_>>()
+        );
+    }
+}
+
+/// The check above can fail: the return of the pattern of issue 24 (357°
+/// after 035°, a vessel 2.8 nm off the port bow heading east) is one it
+/// finds, and holding 035° is not.
+#[test]
+fn the_independent_check_finds_the_return_of_issue_24() {
+    let own_m = DVec2::ZERO;
+    let crossing = VesselState::new(DVec2::new(-4000.0, 3300.0), 0.5 * PI, 6.0, 100.0);
+    let back = 357f64.to_radians();
+    assert!(turned_onto(
+        35f64.to_radians(),
+        own_m,
+        back,
+        angle::velocity(back, 6.0),
+        &crossing
+    ));
+    let held = 35f64.to_radians();
+    assert!(!turned_onto(
+        held,
+        own_m,
+        held,
+        angle::velocity(held, 6.0),
+        &crossing
+    ));
 }

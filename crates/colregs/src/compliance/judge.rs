@@ -5,12 +5,14 @@
 use super::measure::{EasedBack, Measurements, largest_signed, speed_change_of, turn_of};
 use super::{ComplianceViolation, EncounterSample, ScoringParameters};
 use crate::encounter::Encounter;
+use crate::encounter::Role;
 use crate::latch::EncounterLatch;
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    course_change_rad, is_measured_readily_apparent, is_on_port_side, is_port_turn,
-    is_speed_change, is_stand_on_course_change,
+    STEADY_COURSE_WINDOW_S, course_change_rad, is_measured_readily_apparent, is_on_port_side,
+    is_port_turn, is_port_turn_toward_vessel, is_speed_change, is_stand_on_course_change,
+    steady_course_rad,
 };
 
 /// The findings and rule scores built up by the judgement steps.
@@ -266,6 +268,51 @@ impl Findings {
             penalties.push(weights.stand_on_port_turn);
         }
         self.rule_17 = Some(rule_score(&penalties));
+    }
+}
+
+impl Findings {
+    /// The encounter judged from the course held before any turn (rules
+    /// 2(a), 8(a), 17(c)): where risk arose just after ownship turned to port
+    /// toward this vessel, on its port side forward of the beam, and made it
+    /// a risk ([`is_port_turn_toward_vessel`], with the course ownship held a
+    /// window before the latch, or before the turn then under way:
+    /// [`steady_course_rad`] looking back [`STEADY_COURSE_WINDOW_S`]), the
+    /// turn made the encounter. Latched on the new course alone, a vessel
+    /// crossing from port is one ownship stands on for, and the port turn
+    /// onto it would go unjudged. Booked against the encounter's own rule
+    /// (17 standing on, 16 giving way) with the weight of 17(c).
+    pub(super) fn judge_turn_into_encounter(
+        &mut self,
+        samples: &[EncounterSample],
+        latch: &EncounterLatch,
+        rules: &RuleParameters,
+        scoring: &ScoringParameters,
+    ) {
+        let Some(index) = samples.iter().position(|s| s.time_s >= latch.latched_at_s) else {
+            return;
+        };
+        let history = &samples[..=index];
+        let times_s: Vec<f64> = history.iter().map(|s| s.time_s).collect();
+        let courses_rad: Vec<f64> = history.iter().map(|s| s.own.course_rad).collect();
+        let Some(before_rad) = steady_course_rad(&times_s, &courses_rad, STEADY_COURSE_WINDOW_S)
+        else {
+            return;
+        };
+        let at_latch = &samples[index];
+        if !is_port_turn_toward_vessel(before_rad, &at_latch.own, &at_latch.target, rules) {
+            return;
+        }
+        self.violations
+            .push(ComplianceViolation::PortTurnTowardVessel {
+                course_change_rad: course_change_rad(before_rad, at_latch.own.course_rad),
+            });
+        let score = match latch.encounter.role() {
+            Role::StandOn => &mut self.rule_17,
+            _ => &mut self.rule_16,
+        };
+        *score =
+            Some((score.unwrap_or(1.0) - scoring.penalties.stand_on_port_turn).clamp(0.0, 1.0));
     }
 }
 

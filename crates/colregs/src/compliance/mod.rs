@@ -104,6 +104,15 @@
 //!   - [`StandOnTurnedToPort`](ComplianceViolation::StandOnTurnedToPort)
 //!     (rule 17(c), crossing only): at its first detectable port turn ownship
 //!     had the target on its port side (relative to the reference course).
+//! - Whatever the role, the encounter is also judged from the course held
+//!   before any turn:
+//!   [`PortTurnTowardVessel`](ComplianceViolation::PortTurnTowardVessel)
+//!   (rules 2(a), 8(a), 17(c)) when risk arose just after a port turn toward
+//!   the target, on the port side of the course held before the turn (a
+//!   window before the latch, or before the turn then under way) and
+//!   forward of the beam of the new one, that made it a risk to be crossed
+//!   ahead of
+//!   ([`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
 //!
 //! ## Scores (each in `[0, 1]`, 1 = best)
 //! - **Safety** ([`safety_score`]): 1 at or above `clearance_m`, linear down
@@ -233,6 +242,7 @@ pub fn assess_encounter_acting(
         }
         Role::None => {}
     }
+    findings.judge_turn_into_encounter(samples, latch, rules, scoring);
     let passed_at_s = window.passed_index.map(|index| samples[index].time_s);
     assemble(latch, &measured, findings, passed_at_s, scoring)
 }

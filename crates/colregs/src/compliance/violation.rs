@@ -64,6 +64,16 @@ pub enum ComplianceViolation {
         /// The course change at that moment, radians (negative).
         course_change_rad: f64,
     },
+    /// Risk of collision arose just after ownship turned to port toward this
+    /// vessel, on its port side forward of the beam: the turn made the
+    /// encounter (rule 17(c) where ownship then stands on, good seamanship,
+    /// rules 2(a) and 8(a), where it gives way;
+    /// [`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
+    PortTurnTowardVessel {
+        /// The port turn, from the course held before it to the course on
+        /// which risk arose, radians (negative).
+        course_change_rad: f64,
+    },
     /// A give-way vessel made a succession of small alterations while the
     /// encounter was in force: two or more alteration episodes each at least
     /// detectable and smaller than readily apparent (rule 8(b)).
@@ -89,7 +99,8 @@ impl ComplianceViolation {
     /// findings ([`ClearanceViolated`](Self::ClearanceViolated),
     /// [`Collision`](Self::Collision)), which the safety score covers.
     /// [`PortTurn`](Self::PortTurn) and [`CrossedAhead`](Self::CrossedAhead)
-    /// depend on the encounter and give their usual rule (14 and 15); the
+    /// depend on the encounter and give their usual rule (14 and 15), as
+    /// does [`PortTurnTowardVessel`](Self::PortTurnTowardVessel) (17); the
     /// assessment books them against the encounter's own rule.
     #[must_use]
     pub fn rule(&self) -> Option<u8> {
@@ -101,7 +112,8 @@ impl ComplianceViolation {
             Self::CrossedAhead { .. } => Some(15),
             Self::StandOnCourseChanged { .. }
             | Self::StandOnSpeedChanged { .. }
-            | Self::StandOnTurnedToPort { .. } => Some(17),
+            | Self::StandOnTurnedToPort { .. }
+            | Self::PortTurnTowardVessel { .. } => Some(17),
         }
     }
 
@@ -126,6 +138,7 @@ impl ComplianceViolation {
             Self::StandOnCourseChanged { .. } => "stand_on_course_changed",
             Self::StandOnSpeedChanged { .. } => "stand_on_speed_changed",
             Self::StandOnTurnedToPort { .. } => "stand_on_turned_to_port",
+            Self::PortTurnTowardVessel { .. } => "port_turn_toward_vessel",
             Self::SmallAlterations { .. } => "small_alterations",
             Self::AlterationNotHeld { .. } => "alteration_not_held",
         }
@@ -180,6 +193,11 @@ impl std::fmt::Display for ComplianceViolation {
             Self::StandOnTurnedToPort { course_change_rad } => write!(
                 f,
                 "stand-on vessel turned {:.1}° to port for a vessel on its own port side (rule 17(c))",
+                -course_change_rad.to_degrees()
+            ),
+            Self::PortTurnTowardVessel { course_change_rad } => write!(
+                f,
+                "turned {:.1}° to port toward a vessel on the port side forward of the beam, onto a risk of collision (rules 2(a), 8(a), 17(c))",
                 -course_change_rad.to_degrees()
             ),
             Self::SmallAlterations { episodes } => write!(

@@ -94,6 +94,12 @@
 //!   [`stand_on_action_range_m`](crate::RuleParameters::stand_on_action_range_m)
 //!   (2 nm) and ownship gives way to no other target; and in a crossing no
 //!   port turn for a vessel on the port side (17(c)).
+//! - **Port turn toward a vessel**, whatever the role: where risk arose just
+//!   after ownship turned to port toward the target (on the port side of the
+//!   COG held a window before the latch, forward of the beam of the new one)
+//!   and the turn made it a risk of collision to be crossed ahead of,
+//!   [`PortTurnTowardVessel`](crate::ComplianceViolation::PortTurnTowardVessel)
+//!   ([`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
 //! - **Safety**, whatever the role: minimum distance (exact between
 //!   samples), hull contact ([`in_contact`](crate::rules::in_contact)), `d_th`
 //!   kept.
