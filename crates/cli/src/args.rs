@@ -154,7 +154,8 @@ pub(crate) enum Command {
     Judge(crate::judge::JudgeArgs),
     /// Merge the outputs of the shards of one batch into one rows.csv,
     /// summary.json, run.json and plots; refuses shards of different
-    /// batches and warns about missing shards.
+    /// batches, an --out that is one of the inputs, and missing shards
+    /// (exit 2) unless --allow-missing is given.
     #[command(after_help = EXIT_CODES)]
     Merge(MergeArgs),
 }
@@ -282,9 +283,15 @@ pub(crate) struct MergeArgs {
     /// run.json); they must be shards of one batch.
     #[arg(required = true, value_name = "DIR")]
     pub(crate) inputs: Vec<PathBuf>,
-    /// Output folder.
+    /// Output folder; not one of the inputs (refused: it would overwrite
+    /// that shard).
     #[arg(long, value_name = "DIR")]
     pub(crate) out: PathBuf,
+    /// Merge even when some shards of the batch are missing (a warning
+    /// names them, and run.json lists them as missing_shards); without it a
+    /// missing shard is an error (exit 2) and nothing is written.
+    #[arg(long)]
+    pub(crate) allow_missing: bool,
 }
 
 /// What `vorrt plan` prints.
