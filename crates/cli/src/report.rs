@@ -60,7 +60,12 @@ pub struct Report {
     pub path_overhead_pct: f64,
     /// Time to the goal (or to the end of the run), seconds.
     pub duration_s: f64,
-    /// Extra time over the straight route at ownship's speed, percent.
+    /// Time the straight route takes at ownship's service speed (its speed
+    /// at the start), seconds.
+    pub straight_duration_s: f64,
+    /// Extra time over the straight route at the service speed, percent
+    /// (`vorrt_scenarios::Evaluation::time_overhead_pct`): slowing down
+    /// shows here, not in the path overhead.
     pub time_overhead_pct: f64,
     /// The simulation time step, seconds.
     pub time_step_s: f64,
@@ -175,6 +180,7 @@ impl Report {
             straight_length_m: evaluation.straight_length_m,
             path_overhead_pct: evaluation.path_overhead_pct,
             duration_s: evaluation.duration_s,
+            straight_duration_s: evaluation.straight_duration_s,
             time_overhead_pct: evaluation.time_overhead_pct,
             time_step_s: record.time_step_s,
             targets: evaluation.targets.iter().map(TargetReport::new).collect(),
@@ -368,6 +374,27 @@ impl Report {
             } else {
                 "violated"
             }
+        );
+    }
+}
+
+impl Report {
+    /// Appends the "path" and "time" lines that `simulate` and `judge` print:
+    /// the sailed length and the time taken, each against the straight
+    /// route (at the service speed, for the time) with its overhead.
+    pub(crate) fn write_overhead_lines(&self, text: &mut String) {
+        use std::fmt::Write as _;
+        let _ = writeln!(
+            text,
+            "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
+            self.path_length_m, self.straight_length_m, self.path_overhead_pct
+        );
+        let _ = writeln!(
+            text,
+            "time:           {:.1} min vs {:.1} min straight at the service speed: overhead {:.1} %",
+            self.duration_s / 60.0,
+            self.straight_duration_s / 60.0,
+            self.time_overhead_pct
         );
     }
 }

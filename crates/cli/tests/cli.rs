@@ -68,6 +68,7 @@ fn simulate_writes_a_report_that_matches_the_library() {
         "reached goal",
         "min distance",
         "overhead",
+        "straight at the service speed",
         "report.json",
     ] {
         assert!(
@@ -112,6 +113,16 @@ fn assert_report_matches_the_library(report: &Report) {
         report.path_overhead_pct,
         evaluation.path_overhead_pct,
         "overhead",
+    );
+    assert_close(
+        report.straight_duration_s,
+        evaluation.straight_duration_s,
+        "straight duration",
+    );
+    assert_close(
+        report.time_overhead_pct,
+        evaluation.time_overhead_pct,
+        "time overhead",
     );
     assert_eq!(report.planning.plans_made, evaluation.plans_made);
     assert_eq!(report.planning.replans, evaluation.replans);
