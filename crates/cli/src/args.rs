@@ -9,13 +9,15 @@ use std::path::PathBuf;
 
 const EXIT_CODES: &str = "\
 Exit codes:
-  0  success (simulate/demo: every run reached its goal safely; plan: a safe path was found; check: every file is valid;
-     judge: the tracks are safe and compliant)
+  0  success (simulate/demo: every run reached its goal safely and obeyed COLREGs; plan: a safe
+     path was found; check: every file is valid; judge: the tracks are safe and compliant;
+     batch/merge: once run, whatever the results)
   1  the planner found no safe path, or a run did not reach its goal safely
-     (goal not reached, a collision, or the clearance d_th broken); judge: a collision,
-     d_th broken or a COLREGs finding
+     (goal not reached, a collision, or the clearance d_th broken) or had a COLREGs finding;
+     judge: a collision, d_th broken or a COLREGs finding
   2  bad input or usage: an unreadable or invalid scenario file, a wrong option,
-     an output folder that cannot be written";
+     an output folder that cannot be written; merge: an --out that is one of the inputs,
+     or a missing shard without --allow-missing";
 
 /// VORRT-COLREGs path planning for autonomous surface vessels: plan, simulate
 /// and evaluate encounters at sea under the collision regulations.

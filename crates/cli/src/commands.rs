@@ -112,12 +112,13 @@ fn simulate_command(
         dir.display(),
         OUTPUT_FILES.join(",")
     ));
-    if run.report.reached_goal_safely {
-        Ok(ExitStatus::Success)
-    } else {
+    let status = run.status();
+    if !run.report.reached_goal_safely {
         console::warn("the run did not reach its goal safely");
-        Ok(ExitStatus::Unsafe)
+    } else if status != ExitStatus::Success {
+        console::warn("the run reached its goal safely but did not obey COLREGs (findings above)");
     }
+    Ok(status)
 }
 
 fn plan_command(

@@ -366,6 +366,58 @@ fn plan_without_a_safe_path_exits_1() {
     assert!(!message.contains("panicked"));
 }
 
+/// A generated encounter (`vorrt batch --generate open-sea --targets 2
+/// --behaviour sudden-turn --count 12 --seed 3`, run 6) that ownship sails
+/// to its goal safely but not compliantly: both targets turn unannounced,
+/// and ownship, stand-on for TS1, changes course and turns to port.
+const SAFE_WITH_FINDINGS: &str = r#"Scenario(
+    name: "safe with findings",
+    ownship: Vessel(name: "ownship", start_nm: (0.0, 0.0), course_deg: 0.0, speed_kn: 10.2,
+                    length_m: 100.0, goal_nm: (0.0, 9.22)),
+    targets: [
+        Vessel(name: "TS1", start_nm: (0.3245, 6.5451), course_deg: 183.70944596246204,
+               speed_kn: 14.29, length_m: 182.0, goal_nm: (-1.772, -25.792),
+               behaviour: SuddenTurn(at_s: 309.0, turn_deg: -78.0)),
+        Vessel(name: "TS2", start_nm: (-1.5938000000000003, 0.591), course_deg: 59.58948456918453,
+               speed_kn: 13.86, length_m: 245.0, goal_nm: (23.947, 15.582),
+               behaviour: SuddenTurn(at_s: 362.0, turn_deg: -85.0)),
+    ],
+    planner: Planner(nodes_per_phase: 854),
+    seed: 258636510711751834,
+)"#;
+
+#[test]
+fn simulate_exits_1_on_a_colregs_finding_as_judge_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("findings.ron");
+    std::fs::write(&path, SAFE_WITH_FINDINGS).unwrap();
+    let out = dir.path().join("run");
+    let output = vorrt(&["simulate", path_str(&path), "--out", path_str(&out)]);
+    let report: Report =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+    // The premise: a success with a finding.
+    assert!(
+        report.reached_goal_safely && !report.compliant,
+        "{}",
+        stdout(&output)
+    );
+    assert_eq!(output.status.code(), Some(1), "stderr: {}", stderr(&output));
+    assert!(
+        stderr(&output).contains("did not obey COLREGs"),
+        "{}",
+        stderr(&output)
+    );
+    let judged = vorrt(&[
+        "judge",
+        path_str(&out.join("trajectory.csv")),
+        "--scenario",
+        path_str(&path),
+        "--out",
+        path_str(&dir.path().join("judged")),
+    ]);
+    assert_eq!(judged.status.code(), Some(1), "stderr: {}", stderr(&judged));
+}
+
 #[test]
 fn usage_errors_exit_2_without_panicking() {
     for args in [
@@ -453,6 +505,16 @@ fn demo_writes_an_index_of_every_scenario() {
     let index = std::fs::read_to_string(out.join("index.html")).unwrap();
     assert!(index.starts_with("<!DOCTYPE html>") && index.contains("</html>"));
     assert!(index.contains("small crossing"));
+    assert!(index.contains("<th>time overhead</th>"), "{index}");
+    assert!(
+        index.contains("min straight at the service speed"),
+        "{index}"
+    );
+    assert!(
+        stdout(&output).contains("overhead path"),
+        "{}",
+        stdout(&output)
+    );
     assert!(!index.contains("<made>"), "descriptions are escaped");
     assert!(
         !index.contains(">crossing<"),

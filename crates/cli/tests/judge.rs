@@ -385,6 +385,9 @@ fn simulate_then_judge(scenario: &Path) {
         && report["clearance_kept"] == true
         && report["compliant"] == true;
     assert_eq!(code, i32::from(!safe_and_compliant), "{what}");
+    // simulate asks the same of the run, and that it reached its goal.
+    let passed = safe_and_compliant && report["reached_goal"] == true;
+    assert_eq!(sim_code, i32::from(!passed), "{what}");
     assert_eq!(judgement["input"]["clock"]["resampled"], false, "{what}");
 }
 
