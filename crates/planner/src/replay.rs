@@ -19,6 +19,7 @@ use crate::plan::{RejectionCause, RejectionCounts};
 use crate::problem::PlanningProblem;
 use crate::validity::{EncounterState, MotionValidator};
 use std::cell::Cell;
+use std::time::Instant;
 use vorrt_jfs::Leg;
 
 /// A search that found no safe path, with every move its validity check
@@ -65,17 +66,24 @@ fn weaker_or_equal(level: Compliance, than: Compliance) -> bool {
     std::iter::successors(Some(than), |level| level.relaxed()).any(|weaker| weaker == level)
 }
 
-/// A validator that counts the moves it refuses, by cause.
+/// A validator that counts the moves it refuses, by cause, and refuses
+/// every move once `deadline` has passed (a search without samples, such
+/// as the manoeuvre search, then ends within the planner's time budget;
+/// `expired` says so and the planner reports the budget exhausted).
 pub(crate) struct Recording<'a, V> {
     pub(crate) validator: &'a V,
     pub(crate) refused: Cell<RejectionCounts>,
+    pub(crate) deadline: Option<Instant>,
+    pub(crate) expired: Cell<bool>,
 }
 
 impl<'a, V> Recording<'a, V> {
-    pub(crate) fn new(validator: &'a V) -> Self {
+    pub(crate) fn new(validator: &'a V, deadline: Option<Instant>) -> Self {
         Self {
             validator,
             refused: Cell::new(RejectionCounts::default()),
+            deadline,
+            expired: Cell::new(false),
         }
     }
 }
@@ -87,6 +95,15 @@ impl<V: MotionValidator> MotionValidator for Recording<'_, V> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
+        if self.expired.get()
+            || self
+                .deadline
+                .is_some_and(|deadline| Instant::now() > deadline)
+        {
+            // Not a verdict of the check: not counted.
+            self.expired.set(true);
+            return Err(RejectionCause::Clearance);
+        }
         let verdict = self.validator.validate(leg, start_elapsed_s, state);
         if let Err(cause) = verdict {
             let mut refused = self.refused.get();

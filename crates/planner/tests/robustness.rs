@@ -312,3 +312,20 @@ fn a_bad_hold_is_refused_with_its_field() {
     let problem = PlanningProblem::new(own, DVec2::new(0.0, 3000.0), vec![holding]);
     assert!(planner.plan(&problem, 7).is_ok());
 }
+
+#[test]
+fn a_route_hundreds_of_kilometres_long_ends_within_the_budget() {
+    // Like a generated case that once ran for over half an hour in a debug
+    // build: a 775 km route whose goal a vessel lies on. Every manoeuvre of
+    // the search before any tree (one, then two alterations, each leg cut
+    // into `d'` pieces) is refused only at its end, and that search draws no
+    // sample, so the budget read between samples never stopped it; it now
+    // ends at the deadline too.
+    let own = VesselState::new(DVec2::new(774_754.8, 0.0), 5.257, 8.67, 131.3);
+    let target = TargetState::constant_velocity(VesselState::new(DVec2::ZERO, 0.0, 0.0, 120.0));
+    let problem = PlanningProblem::new(own, DVec2::ZERO, vec![target]);
+    for nodes in [5, 40] {
+        let mut planner = Planner::new(tiny_config(nodes, false)).unwrap();
+        assert_returns_quickly(&mut planner, &problem, 444_243);
+    }
+}

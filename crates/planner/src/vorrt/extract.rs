@@ -28,6 +28,8 @@ use crate::safety::SafetyChecker;
 use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::validity::EncounterState;
 use glam::DVec2;
+use std::cell::Cell;
+use std::time::Instant;
 use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, OwnshipModel, Pose, RateLimitedTurn};
 
@@ -133,6 +135,10 @@ fn climb<T>(
     })
 }
 
+/// The planner's time budget ran out during a manoeuvre search or a
+/// branch's simplification.
+pub(super) struct Expired;
+
 /// What every extraction of one problem shares.
 struct Sailing {
     /// Ownship at the start, at its service speed.
@@ -141,10 +147,14 @@ struct Sailing {
     /// tree's branch itself).
     model: Option<RateLimitedTurn>,
     speeds: Speeds,
+    /// When the planner's time budget runs out, if it has one.
+    deadline: Option<Instant>,
+    /// Whether a search ran past `deadline`.
+    expired: Cell<bool>,
 }
 
 impl<C: Constraint> Planner<C> {
-    fn sailing(&self, problem: &PlanningProblem) -> Sailing {
+    fn sailing(&self, problem: &PlanningProblem, deadline: Option<Instant>) -> Sailing {
         let own = problem.ownship_at_service_speed();
         // How ownship sails (the one model of `Turning::ownship_model`): a
         // rate-limited turn, or the tree's own instantaneous steps.
@@ -163,7 +173,13 @@ impl<C: Constraint> Planner<C> {
                 .config
                 .speed_change_rate_mps2(own.length_m, own.speed_mps),
         };
-        Sailing { own, model, speeds }
+        Sailing {
+            own,
+            model,
+            speeds,
+            deadline,
+            expired: Cell::new(false),
+        }
     }
 
     /// The legs the search at `config`'s clearance finds, by `shape` from
@@ -195,7 +211,7 @@ impl<C: Constraint> Planner<C> {
         )
         .with_steady_course(problem.steady_course_rad)
         .with_constraint(&self.constraint);
-        let recording = Recording::new(&checker);
+        let recording = Recording::new(&checker, sailing.deadline);
         let start = Pose {
             position_m: sailing.own.position_m,
             course_rad: sailing.own.course_rad,
@@ -224,6 +240,10 @@ impl<C: Constraint> Planner<C> {
             ),
         };
         refused.add(&recording.refused.get());
+        if recording.expired.get() {
+            sailing.expired.set(true);
+            return None;
+        }
         legs
     }
 
@@ -231,15 +251,21 @@ impl<C: Constraint> Planner<C> {
     /// [`ROOT_LADDER`] that finds a plan, probed as `probe` says. `None`
     /// when none does, or with instantaneous turns (the paper's model has
     /// no manoeuvre search). Every leg refused is counted in `refused`.
+    ///
+    /// # Errors
+    /// [`Expired`] when the search ran past `deadline`.
     pub(super) fn search_root(
         &self,
         problem: &PlanningProblem,
         statistics: &PlanStatistics,
         refused: &mut RejectionCounts,
         probe: Probe,
-    ) -> Option<Plan> {
-        let sailing = self.sailing(problem);
-        let model = sailing.model?;
+        deadline: Option<Instant>,
+    ) -> Result<Option<Plan>, Expired> {
+        let sailing = self.sailing(problem, deadline);
+        let Some(model) = sailing.model else {
+            return Ok(None);
+        };
         // Where sea room allows, the manoeuvre passes wider than `d_th`
         // (PlannerConfig::preferred_clearance_factor); the same validator
         // judges it, with the wider clearance.
@@ -257,12 +283,18 @@ impl<C: Constraint> Planner<C> {
                     ClearanceLevel::Preferred => &preferred,
                     ClearanceLevel::Floor => &self.config,
                 };
+                if sailing.expired.get() {
+                    return None;
+                }
                 self.search_legs(
                     problem, &sailing, model, config, rung.shape, &goal, false, refused,
                 )
             },
-        )?;
-        Some(self.assemble(problem, &sailing, 0, legs, statistics))
+        );
+        if sailing.expired.get() {
+            return Err(Expired);
+        }
+        Ok(legs.map(|legs| self.assemble(problem, &sailing, 0, legs, statistics)))
     }
 
     /// The plan along the tree's branch to `node`: the branch itself for
@@ -270,6 +302,9 @@ impl<C: Constraint> Planner<C> {
     /// `d_th` (`None` when there is none), every leg refused counted in
     /// `refused`. With `root_searched`, the search from the root is known
     /// to have failed, so the simplification does not ask it again.
+    ///
+    /// # Errors
+    /// [`Expired`] when the simplification ran past `deadline`.
     pub(super) fn extract_branch(
         &self,
         problem: &PlanningProblem,
@@ -277,16 +312,28 @@ impl<C: Constraint> Planner<C> {
         statistics: &PlanStatistics,
         refused: &mut RejectionCounts,
         root_searched: bool,
-    ) -> Option<Plan> {
+        deadline: Option<Instant>,
+    ) -> Result<Option<Plan>, Expired> {
+        let sailing = self.sailing(problem, deadline);
         if node == 0 {
             // Ownship is on its goal: the root is the whole branch.
-            let sailing = self.sailing(problem);
             if sailing.model.is_some() {
-                return self.search_root(problem, statistics, refused, Probe::PreferredFirst);
+                return self.search_root(
+                    problem,
+                    statistics,
+                    refused,
+                    Probe::PreferredFirst,
+                    deadline,
+                );
             }
-            return Some(self.assemble(problem, &sailing, 0, Vec::new(), statistics));
+            return Ok(Some(self.assemble(
+                problem,
+                &sailing,
+                0,
+                Vec::new(),
+                statistics,
+            )));
         }
-        let sailing = self.sailing(problem);
         let branch = self.tree.branch(node);
         let legs = match sailing.model {
             None => self.branch_legs(problem, &sailing, &branch),
@@ -295,7 +342,7 @@ impl<C: Constraint> Planner<C> {
                     .iter()
                     .map(|&index| self.tree.positions[index as usize])
                     .collect();
-                self.search_legs(
+                let legs = self.search_legs(
                     problem,
                     &sailing,
                     model,
@@ -304,10 +351,19 @@ impl<C: Constraint> Planner<C> {
                     &points,
                     root_searched,
                     refused,
-                )?
+                );
+                if sailing.expired.get() {
+                    return Err(Expired);
+                }
+                let Some(legs) = legs else {
+                    return Ok(None);
+                };
+                legs
             }
         };
-        Some(self.assemble(problem, &sailing, node, legs, statistics))
+        Ok(Some(
+            self.assemble(problem, &sailing, node, legs, statistics),
+        ))
     }
 
     /// The branch's own steps as legs (instantaneous turns).

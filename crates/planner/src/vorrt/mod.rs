@@ -24,6 +24,7 @@ use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator, check_legs_with};
+use extract::Expired;
 pub use extract::{ClearanceLevel, ManeuverShape, Probe, ROOT_LADDER, Rung};
 use glam::DVec2;
 use std::time::Instant;
@@ -227,6 +228,13 @@ impl<C: Constraint> Planner<C> {
         problem.validate()?;
         let started = Instant::now();
         let config = self.config;
+        // The searches without samples end within the time budget too.
+        // (A budget too large for the clock is no deadline.)
+        let deadline = config.time_budget_s.and_then(|budget_s| {
+            std::time::Duration::try_from_secs_f64(budget_s)
+                .ok()
+                .and_then(|budget| started.checked_add(budget))
+        });
         let own = problem.ownship;
         self.tracks.clear();
         self.tracks
@@ -267,7 +275,8 @@ impl<C: Constraint> Planner<C> {
             // the goal), when it is valid, needs no tree at all.
             statistics.nodes = 1;
             if attempt == 0 && own.position_m != problem.goal_m {
-                match self.search_root(problem, &statistics, refused, probe) {
+                let found = self.search_root(problem, &statistics, refused, probe, deadline);
+                match found.map_err(|Expired| budget_exhausted(&config, &statistics, started))? {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -286,7 +295,15 @@ impl<C: Constraint> Planner<C> {
             total_nodes += self.tree.len() as u64;
             if let Some(node) = reached {
                 statistics.nodes = self.tree.len() as u64;
-                match self.extract_branch(problem, node, &statistics, refused, root_searched) {
+                let found = self.extract_branch(
+                    problem,
+                    node,
+                    &statistics,
+                    refused,
+                    root_searched,
+                    deadline,
+                );
+                match found.map_err(|Expired| budget_exhausted(&config, &statistics, started))? {
                     Some(mut plan) => {
                         plan.statistics.elapsed_s = started.elapsed().as_secs_f64();
                         return Ok(plan);
@@ -466,6 +483,21 @@ impl<C: Constraint> Planner<C> {
             }
         }
         Ok(Growth::Exhausted)
+    }
+}
+
+/// [`PlannerError::BudgetExhausted`] after a search without samples (the
+/// manoeuvre search, a branch's simplification) ran past the time budget.
+fn budget_exhausted(
+    config: &PlannerConfig,
+    statistics: &PlanStatistics,
+    started: Instant,
+) -> PlannerError {
+    let mut statistics = *statistics;
+    statistics.elapsed_s = started.elapsed().as_secs_f64();
+    PlannerError::BudgetExhausted {
+        budget_s: config.time_budget_s.unwrap_or_default(),
+        statistics: Box::new(statistics),
     }
 }
 
