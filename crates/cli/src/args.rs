@@ -290,7 +290,7 @@ pub(crate) struct MergeArgs {
     #[arg(long, value_name = "DIR")]
     pub(crate) out: PathBuf,
     /// Merge even when some shards of the batch are missing (a warning
-    /// names them, and run.json lists them as missing_shards); without it a
+    /// names them, and run.json lists them as missing shards); without it a
     /// missing shard is an error (exit 2) and nothing is written.
     #[arg(long)]
     pub(crate) allow_missing: bool,
