@@ -453,6 +453,29 @@ fn messages_show_readable_numbers_and_name_the_field() {
     );
     assert!(text.len() < 300, "{text}");
 
+    // A limit converted from m/s: a few significant digits, not seventeen.
+    let slow = write(
+        temp.path(),
+        "slow.ron",
+        &Spec {
+            name: "slow",
+            ..SMALL
+        },
+    );
+    let text =
+        std::fs::read_to_string(&slow)
+            .unwrap()
+            .replacen("speed_kn: 12.0", "speed_kn: 0.0001", 1);
+    std::fs::write(&slow, text).unwrap();
+    let output = vorrt(&["check", path_str(&slow)]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output)
+            .contains("ownship.speed_kn is 1.000e-4, ownship must move: at least 0.001944 kn"),
+        "{}",
+        stderr(&output)
+    );
+
     let wrong = write(
         temp.path(),
         "wrong.ron",
