@@ -128,6 +128,7 @@ fn assert_report_matches_the_library(report: &Report) {
     assert_eq!(report.planning.replans, evaluation.replans);
     assert_eq!(report.planning.failed_plans, evaluation.failed_plans);
     assert!(report.planning.total_planning_time_s >= 0.0);
+    assert_plan_events_match(report, &record);
     assert_eq!(report.targets.len(), evaluation.targets.len());
     for (reported, evaluated) in report.targets.iter().zip(&evaluation.targets) {
         assert_eq!(reported.name, evaluated.name);
@@ -148,6 +149,31 @@ fn assert_report_matches_the_library(report: &Report) {
         assert_close(reported.score, evaluated.score, "score");
     }
     assert!(report.reached_goal_safely);
+}
+
+/// `report.json`'s plan events are the record's planner calls: source,
+/// compliance, waypoints and their speeds.
+fn assert_plan_events_match(report: &Report, record: &vorrt_scenarios::SimulationRecord) {
+    assert_eq!(report.plans.len(), record.plans.len());
+    for (reported, event) in report.plans.iter().zip(&record.plans) {
+        assert_close(reported.time_s, event.time_s, "plan time");
+        assert_eq!(reported.succeeded, event.succeeded);
+        assert_eq!(reported.source, event.statistics.source.key());
+        assert_ne!(reported.source, "none", "a plan came back");
+        assert_eq!(reported.compliance, "full");
+        assert_eq!(reported.waypoints.len(), event.waypoints.len());
+        for ((waypoint, planned), speed_mps) in reported
+            .waypoints
+            .iter()
+            .zip(&event.waypoints)
+            .zip(&event.speeds_mps)
+        {
+            assert_close(waypoint.east_m, planned.position_m.x, "east");
+            assert_close(waypoint.speed_mps, *speed_mps, "speed");
+            assert_close(waypoint.speed_kn, *speed_mps * 3600.0 / 1852.0, "kn");
+        }
+    }
+    assert_eq!(report.plans[0].trigger, "initial");
 }
 
 /// The raw `report.json` has the documented field names.
@@ -333,9 +359,36 @@ fn plan_prints_json_waypoints() {
             .all(|w| (0.0..360.0).contains(&w.course_deg))
     );
     // The manoeuvre search finds this one at the root, before any sample.
-    assert!(plan.statistics.nodes > 0);
+    assert_eq!(plan.statistics.nodes, 1);
+    assert_eq!(plan.source, "one_alteration");
+    for waypoint in &plan.waypoints {
+        // The crossing is sailed at the service speed, 12 kn.
+        assert_close(waypoint.speed_kn, 12.0, "speed");
+        assert_close(waypoint.speed_mps, 12.0 * 1852.0 / 3600.0, "speed m/s");
+    }
     let value: serde_json::Value = serde_json::from_str(&stdout(&output)).unwrap();
     assert!(value["waypoints"][0].get("course_deg").is_some());
+}
+
+#[test]
+fn plan_names_the_tree_when_the_tree_found_it() {
+    // The paper's instantaneous turns: no manoeuvre search, the plan is
+    // the tree's branch.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("instant.ron");
+    std::fs::write(
+        &path,
+        SMALL.replace(
+            "    seed: 3,",
+            "    planner: Planner(instant_turns: true),\n    seed: 3,",
+        ),
+    )
+    .unwrap();
+    let output = vorrt(&["plan", path_str(&path)]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let plan: PlanOutput = serde_json::from_str(&stdout(&output)).unwrap();
+    assert_eq!(plan.source, "tree");
+    assert!(plan.statistics.nodes > 1, "{:?}", plan.statistics);
 }
 
 #[test]
