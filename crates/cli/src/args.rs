@@ -38,10 +38,12 @@ pub(crate) enum Command {
     /// the prediction or a new encounter arises; targets move as the scenario
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
-    /// against d_th, path overhead, planner calls and time) and writes
+    /// against d_th, path and time overhead, planner calls and time) and writes
     /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
-    /// DIR/trajectory.geojson and DIR/trajectory.gpx.
+    /// DIR/trajectory.geojson and DIR/trajectory.gpx. Exits 0 when the run
+    /// reached its goal safely and obeyed COLREGs, 1 when it did not (a
+    /// COLREGs finding included, as vorrt judge exits on the same tracks).
     #[expect(
         clippy::doc_markdown,
         reason = "clap help text, printed verbatim by --help"
@@ -93,7 +95,10 @@ pub(crate) enum Command {
     /// Runs the paper scenarios and the Imazu problems (in parallel), writes a
     /// folder per scenario as `simulate` does (DIR/<group>/<file stem>/), and
     /// DIR/index.html: a summary table of every run, then every scenario's
-    /// plots and figures. Open index.html in a browser.
+    /// plots and figures. Open index.html in a browser. One line per run on
+    /// the console, in the scenarios' order; exits 0 when every run reached
+    /// its goal safely and obeyed COLREGs (simulate's judgement), 1 when one
+    /// did not, 2 when one could not run.
     #[command(after_help = EXIT_CODES)]
     Demo {
         /// Output folder.
