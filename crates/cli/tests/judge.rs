@@ -325,7 +325,13 @@ fn courses_and_speeds_come_from_the_track_when_the_file_has_none() {
 /// The report fields the judge must reproduce from `vorrt simulate`'s
 /// trajectory.csv (all but the planner's and the run's identity).
 fn assert_same_judgement(report: &Value, judgement: &Value, what: &str) {
-    let skip = ["seed", "planning", "plans", "scenario_file", "format_version"];
+    let skip = [
+        "seed",
+        "planning",
+        "plans",
+        "scenario_file",
+        "format_version",
+    ];
     let report = report.as_object().unwrap();
     for (key, expected) in report {
         if skip.contains(&key.as_str()) {
