@@ -9,13 +9,15 @@ use std::path::PathBuf;
 
 const EXIT_CODES: &str = "\
 Exit codes:
-  0  success (simulate/demo: every run reached its goal safely; plan: a safe path was found; check: every file is valid;
-     judge: the tracks are safe and compliant)
+  0  success (simulate/demo: every run reached its goal safely and obeyed COLREGs; plan: a safe
+     path was found; check: every file is valid; judge: the tracks are safe and compliant;
+     batch/merge: once run, whatever the results)
   1  the planner found no safe path, or a run did not reach its goal safely
-     (goal not reached, a collision, or the clearance d_th broken); judge: a collision,
-     d_th broken or a COLREGs finding
+     (goal not reached, a collision, or the clearance d_th broken) or had a COLREGs finding;
+     judge: a collision, d_th broken or a COLREGs finding
   2  bad input or usage: an unreadable or invalid scenario file, a wrong option,
-     an output folder that cannot be written";
+     an output folder that cannot be written; merge: an --out that is one of the inputs,
+     or a missing shard without --allow-missing";
 
 /// VORRT-COLREGs path planning for autonomous surface vessels: plan, simulate
 /// and evaluate encounters at sea under the collision regulations.
@@ -36,10 +38,12 @@ pub(crate) enum Command {
     /// the prediction or a new encounter arises; targets move as the scenario
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
-    /// against d_th, path overhead, planner calls and time) and writes
+    /// against d_th, path and time overhead, planner calls and time) and writes
     /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
-    /// DIR/trajectory.geojson and DIR/trajectory.gpx.
+    /// DIR/trajectory.geojson and DIR/trajectory.gpx. Exits 0 when the run
+    /// reached its goal safely and obeyed COLREGs, 1 when it did not (a
+    /// COLREGs finding included, as vorrt judge exits on the same tracks).
     #[expect(
         clippy::doc_markdown,
         reason = "clap help text, printed verbatim by --help"
@@ -91,7 +95,10 @@ pub(crate) enum Command {
     /// Runs the paper scenarios and the Imazu problems (in parallel), writes a
     /// folder per scenario as `simulate` does (DIR/<group>/<file stem>/), and
     /// DIR/index.html: a summary table of every run, then every scenario's
-    /// plots and figures. Open index.html in a browser.
+    /// plots and figures. Open index.html in a browser. One line per run on
+    /// the console, in the scenarios' order; exits 0 when every run reached
+    /// its goal safely and obeyed COLREGs (simulate's judgement), 1 when one
+    /// did not, 2 when one could not run.
     #[command(after_help = EXIT_CODES)]
     Demo {
         /// Output folder.
@@ -154,7 +161,8 @@ pub(crate) enum Command {
     Judge(crate::judge::JudgeArgs),
     /// Merge the outputs of the shards of one batch into one rows.csv,
     /// summary.json, run.json and plots; refuses shards of different
-    /// batches and warns about missing shards.
+    /// batches, an --out that is one of the inputs, and missing shards
+    /// (exit 2) unless --allow-missing is given.
     #[command(after_help = EXIT_CODES)]
     Merge(MergeArgs),
 }
@@ -282,9 +290,15 @@ pub(crate) struct MergeArgs {
     /// run.json); they must be shards of one batch.
     #[arg(required = true, value_name = "DIR")]
     pub(crate) inputs: Vec<PathBuf>,
-    /// Output folder.
+    /// Output folder; not one of the inputs (refused: it would overwrite
+    /// that shard).
     #[arg(long, value_name = "DIR")]
     pub(crate) out: PathBuf,
+    /// Merge even when some shards of the batch are missing (a warning
+    /// names them, and run.json lists them as missing shards); without it a
+    /// missing shard is an error (exit 2) and nothing is written.
+    #[arg(long)]
+    pub(crate) allow_missing: bool,
 }
 
 /// What `vorrt plan` prints.

@@ -79,11 +79,7 @@ pub(crate) fn summary_table(report: &Report) -> String {
     let _ = writeln!(text, "reached goal:   {arrival}");
     let _ = writeln!(text, "collision:      {}", yes_no(report.collision));
     report.write_safety_lines(&mut text);
-    let _ = writeln!(
-        text,
-        "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
-        report.path_length_m, report.straight_length_m, report.path_overhead_pct
-    );
+    report.write_overhead_lines(&mut text);
     let _ = writeln!(text, "planner:        {}", planner_calls(report));
     text
 }
@@ -116,12 +112,13 @@ fn simulate_command(
         dir.display(),
         OUTPUT_FILES.join(",")
     ));
-    if run.report.reached_goal_safely {
-        Ok(ExitStatus::Success)
-    } else {
+    let status = run.status();
+    if !run.report.reached_goal_safely {
         console::warn("the run did not reach its goal safely");
-        Ok(ExitStatus::Unsafe)
+    } else if status != ExitStatus::Success {
+        console::warn("the run reached its goal safely but did not obey COLREGs (findings above)");
     }
+    Ok(status)
 }
 
 fn plan_command(

@@ -49,6 +49,9 @@ impl Entry {
 struct Outcome {
     entry: Entry,
     result: Result<Report, CliError>,
+    /// The run reached its goal safely and obeyed COLREGs
+    /// ([`crate::run::Run::status`]); false on error.
+    passed: bool,
     wall_time_s: f64,
 }
 
@@ -157,21 +160,25 @@ pub(crate) fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
         options.out.display()
     ));
     let started = Instant::now();
+    let printer = OrderedLines::new(console::line);
     let outcomes: Vec<Outcome> = entries
         .into_par_iter()
-        .map(|entry| {
+        .enumerate()
+        .map(|(index, entry)| {
             let clock = Instant::now();
             let seed = seed_for(&entry.scenario, options.seed);
             let result = run_scenario(&entry.scenario, seed).and_then(|run| {
                 write_outputs(&entry.scenario, &run, &options.out.join(entry.folder()))?;
-                Ok(run.report)
+                Ok(run)
             });
+            let passed = matches!(&result, Ok(run) if run.status() == ExitStatus::Success);
             let outcome = Outcome {
                 entry,
-                result,
+                result: result.map(|run| run.report),
+                passed,
                 wall_time_s: clock.elapsed().as_secs_f64(),
             };
-            console::line(&progress_line(&outcome));
+            printer.print(index, progress_line(&outcome));
             outcome
         })
         .collect();
@@ -183,30 +190,68 @@ pub(crate) fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
         .iter()
         .filter(|outcome| matches!(&outcome.result, Ok(report) if report.reached_goal_safely))
         .count();
+    let compliant = outcomes
+        .iter()
+        .filter(|outcome| matches!(&outcome.result, Ok(report) if report.compliant))
+        .count();
     let failed = outcomes
         .iter()
         .filter(|outcome| outcome.result.is_err())
         .count();
     console::line(&format!(
-        "{safe} of {} runs reached their goal safely ({:.1} s); open {}",
+        "{safe} of {} runs reached their goal safely, {compliant} obeyed COLREGs ({:.1} s); open {}",
         outcomes.len(),
         started.elapsed().as_secs_f64(),
         index.display()
     ));
     Ok(if failed > 0 {
         ExitStatus::BadInput
-    } else if safe < outcomes.len() {
-        ExitStatus::Unsafe
-    } else {
+    } else if outcomes.iter().all(|outcome| outcome.passed) {
         ExitStatus::Success
+    } else {
+        ExitStatus::Unsafe
     })
+}
+
+/// Prints lines on stdout in the order of their indices (the scenarios'
+/// order), each as soon as every line before it is out: runs finish in any
+/// order on the worker threads, the console reads in the bundled order.
+struct OrderedLines<Print: Fn(&str)> {
+    /// The next index to print, and the lines that wait for it.
+    pending: std::sync::Mutex<(usize, std::collections::BTreeMap<usize, String>)>,
+    /// Where a line goes once its turn comes.
+    print: Print,
+}
+
+impl<Print: Fn(&str)> OrderedLines<Print> {
+    fn new(print: Print) -> Self {
+        Self {
+            pending: std::sync::Mutex::default(),
+            print,
+        }
+    }
+
+    fn print(&self, index: usize, line: String) {
+        // A poisoned lock only means another run panicked; its lines are
+        // still in order.
+        let mut pending = self
+            .pending
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let (next, waiting) = &mut *pending;
+        waiting.insert(index, line);
+        while let Some(line) = waiting.remove(next) {
+            (self.print)(&line);
+            *next += 1;
+        }
+    }
 }
 
 fn progress_line(outcome: &Outcome) -> String {
     let name = outcome.entry.folder().display().to_string();
     match &outcome.result {
         Ok(report) => format!(
-            "  {name:<22} {:<7} min {:>8} (d_th {:.0} m)  {:<9}  overhead {:>5.1} %  {:.1} s",
+            "  {name:<22} {:<7} min {:>8} (d_th {:.0} m)  {:<9}  overhead path {:>5.1} %, time {:>5.1} %  {:.1} s",
             if report.reached_goal_safely {
                 "safe"
             } else {
@@ -222,6 +267,7 @@ fn progress_line(outcome: &Outcome) -> String {
                 "violation"
             },
             report.path_overhead_pct,
+            report.time_overhead_pct,
             outcome.wall_time_s
         ),
         Err(error) => format!("  {name:<22} ERROR {error}"),
@@ -306,7 +352,8 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
     html.push_str(
         "<h2>Summary</h2>\n<table>\n<tr><th>scenario</th><th>group</th><th>targets</th>\
          <th>reached goal</th><th>collision</th><th>min distance (m)</th><th>d_th (m)</th>\
-         <th>clearance</th><th>COLREGs</th><th>path overhead</th><th>plans / replans / failed</th>\
+         <th>clearance</th><th>COLREGs</th><th>path overhead</th><th>time overhead</th>\
+         <th>plans / replans / failed</th>\
          <th>planning (s)</th><th>report</th></tr>\n",
     );
     for outcome in outcomes {
@@ -322,7 +369,8 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
                     html,
                     "<tr><td>{link}</td><td>{}</td><td class=\"num\">{}</td>{}{}\
                      <td class=\"num\">{}</td><td class=\"num\">{:.0}</td>{}{}\
-                     <td class=\"num\">{:.1} %</td><td class=\"num\">{} / {} / {}</td>\
+                     <td class=\"num\">{:.1} %</td><td class=\"num\">{:.1} %</td>\
+                     <td class=\"num\">{} / {} / {}</td>\
                      <td class=\"num\">{:.3}</td><td><a href=\"{}\">json</a></td></tr>",
                     escape(&entry.group),
                     report.targets.len(),
@@ -335,6 +383,7 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
                     verdict(report.clearance_kept, "kept", "broken"),
                     verdict(report.compliant, "compliant", "violated"),
                     report.path_overhead_pct,
+                    report.time_overhead_pct,
                     report.planning.plans_made,
                     report.planning.replans,
                     report.planning.failed_plans,
@@ -345,7 +394,7 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
             Err(error) => {
                 let _ = writeln!(
                     html,
-                    "<tr><td>{link}</td><td>{}</td><td class=\"bad\" colspan=\"11\">error: {}</td></tr>",
+                    "<tr><td>{link}</td><td>{}</td><td class=\"bad\" colspan=\"12\">error: {}</td></tr>",
                     escape(&entry.group),
                     escape(&error.to_string())
                 );
@@ -408,6 +457,7 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
     let _ = writeln!(
         html,
         "<p>Seed {}; reached goal: <b>{}</b>{}; path {:.0} m vs {:.0} m straight \
+         (overhead {:.1} %), {:.1} min vs {:.1} min straight at the service speed \
          (overhead {:.1} %); {} plans, {} replans, {} failed, {:.2} s planning; \
          run took {:.1} s.</p>",
         report.seed,
@@ -418,12 +468,21 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
         report.path_length_m,
         report.straight_length_m,
         report.path_overhead_pct,
+        report.duration_s / 60.0,
+        report.straight_duration_s / 60.0,
+        report.time_overhead_pct,
         report.planning.plans_made,
         report.planning.replans,
         report.planning.failed_plans,
         report.planning.total_planning_time_s,
         outcome.wall_time_s
     );
+    target_table(html, report);
+    html.push_str("</section>\n");
+}
+
+/// The per-target table of a scenario's section.
+fn target_table(html: &mut String, report: &Report) {
     html.push_str(
         "<table>\n<tr><th>target</th><th>encounter</th><th>role</th>\
          <th>min distance (m)</th><th>at (min)</th><th>clearance</th><th>compliant</th>\
@@ -456,7 +515,7 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
             target.score
         );
     }
-    html.push_str("</table>\n</section>\n");
+    html.push_str("</table>\n");
 }
 
 #[cfg(test)]
@@ -466,6 +525,18 @@ mod tests {
     #[test]
     fn escapes_markup() {
         assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
+    }
+
+    #[test]
+    fn lines_come_out_in_index_order_whatever_order_they_finish_in() {
+        let printed = std::sync::Mutex::new(Vec::new());
+        let lines = OrderedLines::new(|line: &str| printed.lock().unwrap().push(line.to_owned()));
+        lines.print(2, "c".into());
+        lines.print(1, "b".into());
+        assert!(printed.lock().unwrap().is_empty(), "waits for the first");
+        lines.print(0, "a".into());
+        lines.print(3, "d".into());
+        assert_eq!(*printed.lock().unwrap(), ["a", "b", "c", "d"]);
     }
 
     #[test]

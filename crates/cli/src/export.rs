@@ -22,13 +22,14 @@ pub(crate) const TRAJECTORY_GEOJSON: &str = "trajectory.geojson";
 pub(crate) const TRAJECTORY_GPX: &str = "trajectory.gpx";
 
 /// The header of `trajectory.csv` (geographic runs add `lat_deg,lon_deg`).
-pub(crate) const CSV_HEADER: [&str; 6] = [
+pub(crate) const CSV_HEADER: [&str; 7] = [
     "time_s",
     "vessel",
     "east_m",
     "north_m",
     "course_deg",
     "speed_kn",
+    "length_m",
 ];
 
 /// Every vessel of a run: (spec, role, states at every step), ownship first.
@@ -52,8 +53,8 @@ fn course_deg(state: &VesselState) -> f64 {
 }
 
 /// `trajectory.csv`: one row per vessel per recorded step, ownship first
-/// under its scenario name; with `lat_deg,lon_deg` for a geographic scenario.
-/// Positions, courses and speeds are written in full (the shortest decimal
+/// under its scenario name, with its hull length; with `lat_deg,lon_deg` for
+/// a geographic scenario. Positions, courses and speeds are written in full (the shortest decimal
 /// that reads back as the same `f64`), so that `vorrt judge` reads the run
 /// as recorded.
 ///
@@ -86,6 +87,9 @@ pub(crate) fn trajectory_csv(
                 format!("{}", state.position_m.y),
                 format!("{}", course_deg(state)),
                 format!("{}", units::mps_to_knots(state.speed_mps)),
+                // The hull length, so that `vorrt judge` without the
+                // scenario judges collisions on the true hulls.
+                format!("{}", state.length_m),
             ];
             if let Some(frame) = &frame {
                 let (lat_deg, lon_deg) = frame.to_lat_lon_deg(state.position_m);

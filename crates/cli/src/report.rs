@@ -8,8 +8,11 @@
 //! positions `east`/`north` metres in the scenario's frame.
 
 use serde::{Deserialize, Serialize};
-use vorrt_planner::{Plan, PlanStatistics, RejectionCounts};
-use vorrt_scenarios::{Evaluation, Scenario, SimulationRecord, TargetEvaluation};
+use vorrt_geometry::units;
+use vorrt_planner::{Plan, PlanStatistics, RejectionCounts, Waypoint};
+use vorrt_scenarios::{
+    Evaluation, PlanEvent, PlanTrigger, Scenario, SimulationRecord, TargetEvaluation,
+};
 
 /// The version of the report and plan schemas; raised on any incompatible change.
 pub const FORMAT_VERSION: u32 = 1;
@@ -52,6 +55,9 @@ pub struct Report {
     pub reached_goal_safely: bool,
     /// Planner calls during the run.
     pub planning: PlanningReport,
+    /// Every planner call, in time order: why, where its plan came from and
+    /// the plan's waypoints.
+    pub plans: Vec<PlanEventReport>,
     /// Length of ownship's sailed track, metres.
     pub path_length_m: f64,
     /// Straight-line distance from ownship's start to its goal, metres.
@@ -60,7 +66,12 @@ pub struct Report {
     pub path_overhead_pct: f64,
     /// Time to the goal (or to the end of the run), seconds.
     pub duration_s: f64,
-    /// Extra time over the straight route at ownship's speed, percent.
+    /// Time the straight route takes at ownship's service speed (its speed
+    /// at the start), seconds.
+    pub straight_duration_s: f64,
+    /// Extra time over the straight route at the service speed, percent
+    /// (`vorrt_scenarios::Evaluation::time_overhead_pct`): slowing down
+    /// shows here, not in the path overhead.
     pub time_overhead_pct: f64,
     /// The simulation time step, seconds.
     pub time_step_s: f64,
@@ -95,6 +106,81 @@ pub struct PlanningReport {
     pub failed_plans: usize,
     /// Wall-clock time spent in the planner over the run, seconds.
     pub total_planning_time_s: f64,
+}
+
+/// One planner call of a run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PlanEventReport {
+    /// Simulation time of the call, seconds.
+    pub time_s: f64,
+    /// Why ownship planned: `initial`, `target_off_prediction`,
+    /// `new_encounter`, `prediction_changed` or `retry`.
+    pub trigger: String,
+    /// Whether a plan came back.
+    pub succeeded: bool,
+    /// Where ownship's course came from: the planner's search
+    /// (`one_alteration` or `two_alterations` from the root, `tree`), or on
+    /// failure `evasive` (the evasive manoeuvre) or `previous_plan` (the
+    /// plan in force, still safe, kept).
+    pub source: String,
+    /// The COLREGs duties the plan keeps: `full`, or the graded fallback
+    /// level `directions` or `safety_only` (an evasive manoeuvre is
+    /// `safety_only`).
+    pub compliance: String,
+    /// The plan's waypoints (empty on failure).
+    pub waypoints: Vec<WaypointOutput>,
+}
+
+impl PlanEventReport {
+    /// The report of one planner call.
+    #[must_use]
+    pub fn new(event: &PlanEvent) -> Self {
+        let source = if event.succeeded {
+            event.statistics.source.key()
+        } else if event.evasive_course_deg.is_some() {
+            "evasive"
+        } else {
+            "previous_plan"
+        };
+        let trigger = match event.trigger {
+            PlanTrigger::Initial => "initial",
+            PlanTrigger::TargetOffPrediction { .. } => "target_off_prediction",
+            PlanTrigger::NewEncounter { .. } => "new_encounter",
+            PlanTrigger::PredictionChanged { .. } => "prediction_changed",
+            PlanTrigger::Retry => "retry",
+        };
+        Self {
+            time_s: event.time_s,
+            trigger: trigger.to_owned(),
+            succeeded: event.succeeded,
+            source: source.to_owned(),
+            compliance: serde_json::to_value(event.compliance)
+                .ok()
+                .and_then(|value| value.as_str().map(str::to_owned))
+                .unwrap_or_default(),
+            waypoints: waypoint_outputs(&event.waypoints, &event.speeds_mps),
+        }
+    }
+}
+
+/// The waypoints of a plan as written, each with its planned speed
+/// (`planned_mps[i]`; not a number, written `null`, where none was recorded).
+fn waypoint_outputs(waypoints: &[Waypoint], planned_mps: &[f64]) -> Vec<WaypointOutput> {
+    waypoints
+        .iter()
+        .enumerate()
+        .map(|(index, waypoint)| {
+            let speed_mps = planned_mps.get(index).copied().unwrap_or(f64::NAN);
+            WaypointOutput {
+                time_s: waypoint.time_s,
+                east_m: waypoint.position_m.x,
+                north_m: waypoint.position_m.y,
+                course_deg: waypoint.course_rad.to_degrees().rem_euclid(360.0),
+                speed_mps,
+                speed_kn: units::mps_to_knots(speed_mps),
+            }
+        })
+        .collect()
 }
 
 /// How ownship fared against one target.
@@ -171,10 +257,12 @@ impl Report {
                 failed_plans: evaluation.failed_plans,
                 total_planning_time_s: evaluation.planning_time_s,
             },
+            plans: record.plans.iter().map(PlanEventReport::new).collect(),
             path_length_m: evaluation.path_length_m,
             straight_length_m: evaluation.straight_length_m,
             path_overhead_pct: evaluation.path_overhead_pct,
             duration_s: evaluation.duration_s,
+            straight_duration_s: evaluation.straight_duration_s,
             time_overhead_pct: evaluation.time_overhead_pct,
             time_step_s: record.time_step_s,
             targets: evaluation.targets.iter().map(TargetReport::new).collect(),
@@ -227,6 +315,9 @@ pub struct PlanOutput {
     pub length_m: f64,
     /// Time from the first to the last waypoint, seconds.
     pub duration_s: f64,
+    /// Which search found the plan: `one_alteration` or `two_alterations`
+    /// (the manoeuvre search from the root), or `tree`.
+    pub source: String,
     /// From ownship's start (first) to its goal (last).
     pub waypoints: Vec<WaypointOutput>,
     /// What the search did.
@@ -245,6 +336,11 @@ pub struct WaypointOutput {
     /// Course on the leg that ends here (the start course at the first
     /// waypoint), degrees clockwise from north in `[0, 360)`.
     pub course_deg: f64,
+    /// Planned speed here (at the end of the leg that ends here; the start
+    /// speed at the first waypoint), metres per second.
+    pub speed_mps: f64,
+    /// The same speed, knots.
+    pub speed_kn: f64,
 }
 
 /// Search statistics of one planner call.
@@ -287,16 +383,8 @@ impl PlanOutput {
             d_th_m,
             length_m: plan.length_m(),
             duration_s: plan.duration_s(),
-            waypoints: plan
-                .waypoints
-                .iter()
-                .map(|waypoint| WaypointOutput {
-                    time_s: waypoint.time_s,
-                    east_m: waypoint.position_m.x,
-                    north_m: waypoint.position_m.y,
-                    course_deg: waypoint.course_rad.to_degrees().rem_euclid(360.0),
-                })
-                .collect(),
+            source: plan.statistics.source.key().to_owned(),
+            waypoints: waypoint_outputs(&plan.waypoints, &plan.waypoint_speeds_mps()),
             statistics: StatisticsOutput::from(&plan.statistics),
         }
     }
@@ -368,6 +456,27 @@ impl Report {
             } else {
                 "violated"
             }
+        );
+    }
+}
+
+impl Report {
+    /// Appends the "path" and "time" lines that `simulate` and `judge` print:
+    /// the sailed length and the time taken, each against the straight
+    /// route (at the service speed, for the time) with its overhead.
+    pub(crate) fn write_overhead_lines(&self, text: &mut String) {
+        use std::fmt::Write as _;
+        let _ = writeln!(
+            text,
+            "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
+            self.path_length_m, self.straight_length_m, self.path_overhead_pct
+        );
+        let _ = writeln!(
+            text,
+            "time:           {:.1} min vs {:.1} min straight at the service speed: overhead {:.1} %",
+            self.duration_s / 60.0,
+            self.straight_duration_s / 60.0,
+            self.time_overhead_pct
         );
     }
 }

@@ -1,7 +1,7 @@
 //! One scenario's closed-loop run and the files it writes, shared by
 //! `simulate`, `demo` and `batch`.
 
-use crate::error::CliError;
+use crate::error::{CliError, ExitStatus};
 use crate::plot;
 use crate::report::Report;
 use std::path::Path;
@@ -30,6 +30,23 @@ pub(crate) struct Run {
     pub(crate) evaluation: Evaluation,
     /// The report written to `report.json`.
     pub(crate) report: Report,
+}
+
+impl Run {
+    /// How the run ends the command: 0 when it succeeded
+    /// ([`Evaluation::success`]: goal reached, no collision, `d_th` kept)
+    /// and the tracks were safe and compliant
+    /// ([`Evaluation::safe_and_compliant`]: no COLREGs finding, as `vorrt
+    /// judge` asks of the same tracks), else 1. The one exit judgement of
+    /// `vorrt simulate` and of each run of `vorrt demo`.
+    #[must_use]
+    pub(crate) fn status(&self) -> ExitStatus {
+        if self.evaluation.success() && self.evaluation.safe_and_compliant() {
+            ExitStatus::Success
+        } else {
+            ExitStatus::Unsafe
+        }
+    }
 }
 
 /// Simulates `scenario` with `seed` and evaluates the run.

@@ -187,3 +187,90 @@ fn bad_batch_options_exit_2() {
         );
     }
 }
+
+/// The saved scenario files of `dir/folder`, sorted (none without the folder).
+fn saved(dir: &Path, folder: &str) -> Vec<String> {
+    let mut files: Vec<String> = std::fs::read_dir(dir.join(folder))
+        .map(|entries| {
+            entries
+                .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    files.sort();
+    files
+}
+
+#[test]
+fn progress_headline_and_saved_runs_count_colregs() {
+    let temp = tempfile::tempdir().unwrap();
+    let out = temp.path().join("batch");
+    // Targets that turn unannounced: some runs succeed with a finding.
+    let output = vorrt(&[
+        "batch",
+        "--generate",
+        "open-sea",
+        "--targets",
+        "2",
+        "--behaviour",
+        "sudden-turn",
+        "--count",
+        "12",
+        "--seed",
+        "3",
+        "--jobs",
+        "1",
+        "--out",
+        path_str(&out),
+    ]);
+    ok(&output);
+    let rows = read_csv(&out.join("rows.csv")).unwrap();
+    let with_findings: Vec<_> = rows
+        .iter()
+        .filter(|row| row.success() && !row.compliant)
+        .collect();
+    assert!(
+        !with_findings.is_empty(),
+        "the premise: a run that succeeded with a finding"
+    );
+    let log = String::from_utf8_lossy(&output.stderr);
+    for row in &rows {
+        let label = if !row.success() {
+            "unsafe (".to_owned()
+        } else if row.compliant {
+            "compliant, min".to_owned()
+        } else {
+            format!("findings: {}", row.violations)
+        };
+        let line = format!("{}: {label}", row.name);
+        assert!(log.contains(&line), "no {line:?} in {log}");
+    }
+    assert!(!log.contains(": ok"), "{log}");
+    let summary = summary(&out);
+    let headline = format!(
+        "success              {:.1} %   compliant {:.1} %",
+        100.0 * summary.success_rate,
+        100.0 * summary.compliance_rate
+    );
+    let printed = String::from_utf8_lossy(&output.stdout);
+    assert!(printed.contains(&headline), "{printed}");
+    assert!(printed.contains("time overhead %"), "{printed}");
+    let name = |row: &vorrt_scenarios::BatchRow| format!("{:06}-{}.ron", row.index, row.name);
+    assert_eq!(
+        saved(&out, "findings"),
+        with_findings
+            .iter()
+            .map(|row| name(row))
+            .collect::<Vec<_>>()
+    );
+    assert_eq!(
+        saved(&out, "failures"),
+        rows.iter()
+            .filter(|row| !row.success())
+            .map(name)
+            .collect::<Vec<_>>()
+    );
+    // The time overhead is in the rows and summarised like the path's.
+    assert!(rows.iter().all(|row| row.time_overhead_pct.is_finite()));
+    assert_eq!(summary.time_overhead_pct.count, rows.len());
+}

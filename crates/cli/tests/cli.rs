@@ -68,6 +68,7 @@ fn simulate_writes_a_report_that_matches_the_library() {
         "reached goal",
         "min distance",
         "overhead",
+        "straight at the service speed",
         "report.json",
     ] {
         assert!(
@@ -113,10 +114,21 @@ fn assert_report_matches_the_library(report: &Report) {
         evaluation.path_overhead_pct,
         "overhead",
     );
+    assert_close(
+        report.straight_duration_s,
+        evaluation.straight_duration_s,
+        "straight duration",
+    );
+    assert_close(
+        report.time_overhead_pct,
+        evaluation.time_overhead_pct,
+        "time overhead",
+    );
     assert_eq!(report.planning.plans_made, evaluation.plans_made);
     assert_eq!(report.planning.replans, evaluation.replans);
     assert_eq!(report.planning.failed_plans, evaluation.failed_plans);
     assert!(report.planning.total_planning_time_s >= 0.0);
+    assert_plan_events_match(report, &record);
     assert_eq!(report.targets.len(), evaluation.targets.len());
     for (reported, evaluated) in report.targets.iter().zip(&evaluation.targets) {
         assert_eq!(reported.name, evaluated.name);
@@ -137,6 +149,31 @@ fn assert_report_matches_the_library(report: &Report) {
         assert_close(reported.score, evaluated.score, "score");
     }
     assert!(report.reached_goal_safely);
+}
+
+/// `report.json`'s plan events are the record's planner calls: source,
+/// compliance, waypoints and their speeds.
+fn assert_plan_events_match(report: &Report, record: &vorrt_scenarios::SimulationRecord) {
+    assert_eq!(report.plans.len(), record.plans.len());
+    for (reported, event) in report.plans.iter().zip(&record.plans) {
+        assert_close(reported.time_s, event.time_s, "plan time");
+        assert_eq!(reported.succeeded, event.succeeded);
+        assert_eq!(reported.source, event.statistics.source.key());
+        assert_ne!(reported.source, "none", "a plan came back");
+        assert_eq!(reported.compliance, "full");
+        assert_eq!(reported.waypoints.len(), event.waypoints.len());
+        for ((waypoint, planned), speed_mps) in reported
+            .waypoints
+            .iter()
+            .zip(&event.waypoints)
+            .zip(&event.speeds_mps)
+        {
+            assert_close(waypoint.east_m, planned.position_m.x, "east");
+            assert_close(waypoint.speed_mps, *speed_mps, "speed");
+            assert_close(waypoint.speed_kn, *speed_mps * 3600.0 / 1852.0, "kn");
+        }
+    }
+    assert_eq!(report.plans[0].trigger, "initial");
 }
 
 /// The raw `report.json` has the documented field names.
@@ -322,9 +359,36 @@ fn plan_prints_json_waypoints() {
             .all(|w| (0.0..360.0).contains(&w.course_deg))
     );
     // The manoeuvre search finds this one at the root, before any sample.
-    assert!(plan.statistics.nodes > 0);
+    assert_eq!(plan.statistics.nodes, 1);
+    assert_eq!(plan.source, "one_alteration");
+    for waypoint in &plan.waypoints {
+        // The crossing is sailed at the service speed, 12 kn.
+        assert_close(waypoint.speed_kn, 12.0, "speed");
+        assert_close(waypoint.speed_mps, 12.0 * 1852.0 / 3600.0, "speed m/s");
+    }
     let value: serde_json::Value = serde_json::from_str(&stdout(&output)).unwrap();
     assert!(value["waypoints"][0].get("course_deg").is_some());
+}
+
+#[test]
+fn plan_names_the_tree_when_the_tree_found_it() {
+    // The paper's instantaneous turns: no manoeuvre search, the plan is
+    // the tree's branch.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("instant.ron");
+    std::fs::write(
+        &path,
+        SMALL.replace(
+            "    seed: 3,",
+            "    planner: Planner(instant_turns: true),\n    seed: 3,",
+        ),
+    )
+    .unwrap();
+    let output = vorrt(&["plan", path_str(&path)]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let plan: PlanOutput = serde_json::from_str(&stdout(&output)).unwrap();
+    assert_eq!(plan.source, "tree");
+    assert!(plan.statistics.nodes > 1, "{:?}", plan.statistics);
 }
 
 #[test]
@@ -353,6 +417,58 @@ fn plan_without_a_safe_path_exits_1() {
     );
     assert!(stdout(&output).is_empty());
     assert!(!message.contains("panicked"));
+}
+
+/// A generated encounter (`vorrt batch --generate open-sea --targets 2
+/// --behaviour sudden-turn --count 12 --seed 3`, run 6) that ownship sails
+/// to its goal safely but not compliantly: both targets turn unannounced,
+/// and ownship, stand-on for TS1, changes course and turns to port.
+const SAFE_WITH_FINDINGS: &str = r#"Scenario(
+    name: "safe with findings",
+    ownship: Vessel(name: "ownship", start_nm: (0.0, 0.0), course_deg: 0.0, speed_kn: 10.2,
+                    length_m: 100.0, goal_nm: (0.0, 9.22)),
+    targets: [
+        Vessel(name: "TS1", start_nm: (0.3245, 6.5451), course_deg: 183.70944596246204,
+               speed_kn: 14.29, length_m: 182.0, goal_nm: (-1.772, -25.792),
+               behaviour: SuddenTurn(at_s: 309.0, turn_deg: -78.0)),
+        Vessel(name: "TS2", start_nm: (-1.5938000000000003, 0.591), course_deg: 59.58948456918453,
+               speed_kn: 13.86, length_m: 245.0, goal_nm: (23.947, 15.582),
+               behaviour: SuddenTurn(at_s: 362.0, turn_deg: -85.0)),
+    ],
+    planner: Planner(nodes_per_phase: 854),
+    seed: 258636510711751834,
+)"#;
+
+#[test]
+fn simulate_exits_1_on_a_colregs_finding_as_judge_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("findings.ron");
+    std::fs::write(&path, SAFE_WITH_FINDINGS).unwrap();
+    let out = dir.path().join("run");
+    let output = vorrt(&["simulate", path_str(&path), "--out", path_str(&out)]);
+    let report: Report =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+    // The premise: a success with a finding.
+    assert!(
+        report.reached_goal_safely && !report.compliant,
+        "{}",
+        stdout(&output)
+    );
+    assert_eq!(output.status.code(), Some(1), "stderr: {}", stderr(&output));
+    assert!(
+        stderr(&output).contains("did not obey COLREGs"),
+        "{}",
+        stderr(&output)
+    );
+    let judged = vorrt(&[
+        "judge",
+        path_str(&out.join("trajectory.csv")),
+        "--scenario",
+        path_str(&path),
+        "--out",
+        path_str(&dir.path().join("judged")),
+    ]);
+    assert_eq!(judged.status.code(), Some(1), "stderr: {}", stderr(&judged));
 }
 
 #[test]
@@ -442,6 +558,16 @@ fn demo_writes_an_index_of_every_scenario() {
     let index = std::fs::read_to_string(out.join("index.html")).unwrap();
     assert!(index.starts_with("<!DOCTYPE html>") && index.contains("</html>"));
     assert!(index.contains("small crossing"));
+    assert!(index.contains("<th>time overhead</th>"), "{index}");
+    assert!(
+        index.contains("min straight at the service speed"),
+        "{index}"
+    );
+    assert!(
+        stdout(&output).contains("overhead path"),
+        "{}",
+        stdout(&output)
+    );
     assert!(!index.contains("<made>"), "descriptions are escaped");
     assert!(
         !index.contains(">crossing<"),

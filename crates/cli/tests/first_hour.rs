@@ -309,7 +309,44 @@ fn merge_refuses_mixed_batches_and_reports_missing_shards() {
         stderr(&output)
     );
 
+    // A missing shard is an error unless asked for, and nothing is written.
     let output = vorrt(&["merge", path_str(&a), "--out", path_str(&merged)]);
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("shards missing from the merge: 1/2"),
+        "{}",
+        stderr(&output)
+    );
+    assert!(!merged.join("run.json").exists());
+
+    // --out naming an input is refused before the shard is touched.
+    let rows_before = std::fs::read_to_string(a.join("rows.csv")).unwrap();
+    let same = a.join("..").join("a");
+    let output = vorrt(&[
+        "merge",
+        path_str(&a),
+        "--allow-missing",
+        "--out",
+        path_str(&same),
+    ]);
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("would overwrite that shard"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(
+        std::fs::read_to_string(a.join("rows.csv")).unwrap(),
+        rows_before
+    );
+
+    let output = vorrt(&[
+        "merge",
+        path_str(&a),
+        "--allow-missing",
+        "--out",
+        path_str(&merged),
+    ]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
     assert!(stderr(&output).contains("missing"), "{}", stderr(&output));
     let run: serde_json::Value =
@@ -415,6 +452,29 @@ fn messages_show_readable_numbers_and_name_the_field() {
         "{text}"
     );
     assert!(text.len() < 300, "{text}");
+
+    // A limit converted from m/s: a few significant digits, not seventeen.
+    let slow = write(
+        temp.path(),
+        "slow.ron",
+        &Spec {
+            name: "slow",
+            ..SMALL
+        },
+    );
+    let text =
+        std::fs::read_to_string(&slow)
+            .unwrap()
+            .replacen("speed_kn: 12.0", "speed_kn: 0.0001", 1);
+    std::fs::write(&slow, text).unwrap();
+    let output = vorrt(&["check", path_str(&slow)]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output)
+            .contains("ownship.speed_kn is 1.000e-4, ownship must move: at least 0.001944 kn"),
+        "{}",
+        stderr(&output)
+    );
 
     let wrong = write(
         temp.path(),

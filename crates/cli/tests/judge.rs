@@ -325,7 +325,13 @@ fn courses_and_speeds_come_from_the_track_when_the_file_has_none() {
 /// The report fields the judge must reproduce from `vorrt simulate`'s
 /// trajectory.csv (all but the planner's and the run's identity).
 fn assert_same_judgement(report: &Value, judgement: &Value, what: &str) {
-    let skip = ["seed", "planning", "scenario_file", "format_version"];
+    let skip = [
+        "seed",
+        "planning",
+        "plans",
+        "scenario_file",
+        "format_version",
+    ];
     let report = report.as_object().unwrap();
     for (key, expected) in report {
         if skip.contains(&key.as_str()) {
@@ -385,6 +391,9 @@ fn simulate_then_judge(scenario: &Path) {
         && report["clearance_kept"] == true
         && report["compliant"] == true;
     assert_eq!(code, i32::from(!safe_and_compliant), "{what}");
+    // simulate asks the same of the run, and that it reached its goal.
+    let passed = safe_and_compliant && report["reached_goal"] == true;
+    assert_eq!(sim_code, i32::from(!passed), "{what}");
     assert_eq!(judgement["input"]["clock"]["resampled"], false, "{what}");
 }
 
@@ -584,4 +593,49 @@ fn bad_input_exits_2_naming_the_file_line_and_field() {
     assert!(String::from_utf8_lossy(&output.stderr).contains("\"own\""));
     let output = vorrt(&["judge", text(&dir.path().join("missing.csv"))]);
     assert_eq!(output.status.code(), Some(2));
+}
+
+/// Issue 26's crossing: ownship slows from 12 to 5.4 kn for 28 minutes on a
+/// straight track. The path overhead is nil; the time overhead is not.
+#[test]
+fn slowing_down_shows_in_the_time_overhead_not_the_path_overhead() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut tracks = "time_s,vessel,east_m,north_m,course_deg,speed_kn,length_m\n".to_owned();
+    let mut north_m = 0.0;
+    for step in 0..=240_u32 {
+        let time_s = f64::from(step) * 10.0;
+        let speed_kn = if (300.0..1980.0).contains(&time_s) {
+            5.4
+        } else {
+            12.0
+        };
+        writeln!(tracks, "{time_s},own,0,{north_m},0,{speed_kn},100").unwrap();
+        // A target far off to the east, no risk of collision.
+        writeln!(tracks, "{time_s},T,{},{north_m},0,12,100", 10.0 * NM).unwrap();
+        north_m += speed_kn * KN * 10.0;
+    }
+    let path = dir.path().join("slow.csv");
+    std::fs::write(&path, tracks).unwrap();
+    let out = dir.path().join("out");
+    let output = vorrt(&["judge", text(&path), "--out", text(&out)]);
+    let printed = String::from_utf8_lossy(&output.stdout);
+    assert!(printed.contains("overhead 0.0 %"), "{printed}");
+    assert!(
+        printed.contains("straight at the service speed"),
+        "{printed}"
+    );
+    let judgement = read_json(&out.join("judgement.json"));
+    let number = |key: &str| judgement[key].as_f64().unwrap();
+    assert!(number("path_overhead_pct").abs() < 0.1, "{judgement}");
+    // The straight route at the service speed (12 kn, the first sample's).
+    let straight_s = number("straight_length_m") / (12.0 * KN);
+    assert!((number("straight_duration_s") - straight_s).abs() < 1e-6);
+    let expected_pct = 100.0 * (number("duration_s") / straight_s - 1.0);
+    assert!((number("time_overhead_pct") - expected_pct).abs() < 1e-9);
+    // 28 minutes at 5.4 kn instead of 12 kn: about 15 minutes lost.
+    assert!(
+        (number("duration_s") - straight_s - 1680.0 * (1.0 - 5.4 / 12.0)).abs() < 30.0,
+        "{judgement}"
+    );
+    assert!(number("time_overhead_pct") > 50.0, "{judgement}");
 }

@@ -110,7 +110,7 @@ fn ais_log_to_geojson_gpx_and_report() {
     let mut rows = csv.lines();
     assert_eq!(
         rows.next(),
-        Some("time_s,vessel,east_m,north_m,course_deg,speed_kn,lat_deg,lon_deg")
+        Some("time_s,vessel,east_m,north_m,course_deg,speed_kn,length_m,lat_deg,lon_deg")
     );
     // Written in full, so that `vorrt judge` reads the run as recorded.
     let first: Vec<&str> = rows.next().unwrap().split(',').collect();
@@ -220,7 +220,10 @@ fn every_run_writes_trajectory_csv() {
             .unwrap();
     let vessels = 1 + report["targets"].as_array().unwrap().len();
     let lines: Vec<&str> = csv.lines().collect();
-    assert_eq!(lines[0], "time_s,vessel,east_m,north_m,course_deg,speed_kn");
+    assert_eq!(
+        lines[0],
+        "time_s,vessel,east_m,north_m,course_deg,speed_kn,length_m"
+    );
     assert_eq!((lines.len() - 1) % vessels, 0, "a row per vessel per step");
     let step_count = (lines.len() - 1) / vessels;
     let duration_s = report["duration_s"].as_f64().unwrap();
@@ -239,6 +242,11 @@ fn every_run_writes_trajectory_csv() {
         assert_eq!(
             row.split(',').nth(1),
             Some(own.ownship.name.as_str()),
+            "{row}"
+        );
+        assert_eq!(
+            row.split(',').nth(6),
+            Some(own.ownship.length_m.to_string().as_str()),
             "{row}"
         );
     }
@@ -269,7 +277,7 @@ fn batch_trajectories_write_one_csv_per_run() {
     assert_eq!(runs.len(), 3);
     for run in runs {
         let csv = std::fs::read_to_string(&run).unwrap();
-        assert!(csv.starts_with("time_s,vessel,east_m,north_m,course_deg,speed_kn\n"));
+        assert!(csv.starts_with("time_s,vessel,east_m,north_m,course_deg,speed_kn,length_m\n"));
     }
 }
 

@@ -8,11 +8,17 @@ use vorrt_colregs::ColregsError;
 /// A number as a person reads it in a message: plainly when it is of an
 /// everyday size (`12.5`, `0.002`, `250000`), else in scientific notation
 /// with four significant digits (`1.000e300`, `1.000e-300`), never as the
-/// hundreds of digits `{}` gives for such values.
+/// hundreds of digits `{}` gives for such values. A computed value of an
+/// everyday size with more than six significant digits (a unit conversion's
+/// `0.0019438444924406047`) is rounded to four (`0.001944`); one with six or
+/// fewer, as a person types it, is shown as it is.
 ///
 /// ```
 /// use vorrt_planner::error::Readable;
 /// assert_eq!(Readable(12.5).to_string(), "12.5");
+/// assert_eq!(Readable(123.456).to_string(), "123.456");
+/// assert_eq!(Readable(0.0019438444924406047).to_string(), "0.001944");
+/// assert_eq!(Readable(30.000000001).to_string(), "30");
 /// assert_eq!(Readable(1e300).to_string(), "1.000e300");
 /// assert_eq!(Readable(-1e-300).to_string(), "-1.000e-300");
 /// assert_eq!(Readable(f64::NAN).to_string(), "NaN");
@@ -24,8 +30,29 @@ impl fmt::Display for Readable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let value = self.0;
         let size = value.abs();
-        if !value.is_finite() || size == 0.0 || (1e-3..1e7).contains(&size) {
+        if !value.is_finite() || size == 0.0 {
             write!(f, "{value}")
+        } else if (1e-3..1e7).contains(&size) {
+            // The decimal exponent of the leading digit (-3 to 6 here), and
+            // the decimals that leave `digits` significant digits.
+            let exponent = (-3..=6)
+                .rev()
+                .find(|&exponent| size >= 10f64.powi(exponent))
+                .unwrap_or(-3);
+            let decimals = |digits: i32| usize::try_from(digits - 1 - exponent).unwrap_or(0);
+            let six = format!("{value:.*}", decimals(6));
+            if six.parse::<f64>() == Ok(value) {
+                write!(f, "{value}")
+            } else {
+                let four = format!("{value:.*}", decimals(4));
+                // 30.000000001 is "30.00" at four digits: the zeros say nothing.
+                let trimmed = if four.contains('.') {
+                    four.trim_end_matches('0').trim_end_matches('.')
+                } else {
+                    &four
+                };
+                f.write_str(trimmed)
+            }
         } else {
             write!(f, "{value:.3e}")
         }

@@ -22,7 +22,7 @@ pub use evasion::{
     EVASION_HOLD_MARGIN_M, EvasionSearch, EvasiveManeuver, evasive_course, evasive_leg,
     evasive_leg_constrained, evasive_leg_holding,
 };
-pub use plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
+pub use plan::{Plan, PlanSource, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
 pub use validity::{EncounterState, MotionValidator, check_legs, check_legs_with};
 pub use vorrt::Planner;

@@ -271,6 +271,41 @@ pub struct PlanStatistics {
     pub unsailable_branches: u64,
     /// Wall-clock time spent, seconds (not part of the deterministic output).
     pub elapsed_s: f64,
+    /// Which search found the plan (`none` on failure).
+    #[serde(default)]
+    pub source: PlanSource,
+}
+
+/// Which search of the planner found a plan: the manoeuvre search from the
+/// root ([`ROOT_LADDER`](crate::vorrt::ROOT_LADDER), by the shape of its
+/// rung), or the tree.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlanSource {
+    /// No plan (a failed call), or statistics read from a file written
+    /// before the field existed.
+    #[default]
+    None,
+    /// The search from the root: one alteration held, then the goal.
+    OneAlteration,
+    /// The search from the root: two alterations (the course kept, then one
+    /// action; or an alteration held, then the course before it resumed).
+    TwoAlterations,
+    /// The tree's branch to the goal, simplified into sailable legs.
+    Tree,
+}
+
+impl PlanSource {
+    /// Its name in files: `none`, `one_alteration`, `two_alterations`, `tree`.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            PlanSource::None => "none",
+            PlanSource::OneAlteration => "one_alteration",
+            PlanSource::TwoAlterations => "two_alterations",
+            PlanSource::Tree => "tree",
+        }
+    }
 }
 
 /// A safe path from ownship's position to its goal.
@@ -354,6 +389,18 @@ impl Plan {
             .min(self.legs.len() - 1);
         let leg_start_s = self.waypoints.get(index)?.time_s;
         Some(self.legs[index].speed_at(time_s - leg_start_s))
+    }
+
+    /// Ownship's planned speed at each waypoint, m/s: at the end of the leg
+    /// that ends there ([`speed_at`](Self::speed_at)), the start speed at the
+    /// first. A plan without legs (ownship already on its goal) has 0 at its
+    /// one waypoint.
+    #[must_use]
+    pub fn waypoint_speeds_mps(&self) -> Vec<f64> {
+        self.waypoints
+            .iter()
+            .map(|waypoint| self.speed_at(waypoint.time_s).unwrap_or(0.0))
+            .collect()
     }
 
     /// Ownship's planned position and course at `time_s` (clamped to the

@@ -148,21 +148,55 @@ fn merged_info(inputs: &[PathBuf], infos: &[RunInfo]) -> Result<RunInfo, CliErro
     })
 }
 
-/// Runs `vorrt merge`: checks that the inputs are shards of one batch
-/// (their `run.json` agree on generator, folder, seed, count and number of
-/// shards, each shard once), warns about missing shards, and writes the
-/// merged rows, summary, plots and `run.json`.
+/// Refuses an output folder that is one of the inputs: the merge would
+/// overwrite that shard's rows with the merged ones.
 ///
 /// # Errors
-/// [`CliError::BadInput`] when an input cannot be read or does not belong;
-/// [`CliError::Output`] when the output cannot be written.
+/// [`CliError::BadInput`] naming the input.
+fn refuse_out_among_inputs(inputs: &[PathBuf], out: &Path) -> Result<(), CliError> {
+    // A folder that does not exist yet is no input; one that does is
+    // compared by its canonical path (`a/../shard` is `shard`).
+    let Ok(out_canonical) = out.canonicalize() else {
+        return Ok(());
+    };
+    match inputs.iter().find(|input| {
+        input
+            .canonicalize()
+            .is_ok_and(|input| input == out_canonical)
+    }) {
+        Some(input) => Err(CliError::BadInput(format!(
+            "--out {} is the input {}: the merge would overwrite that shard; give another folder",
+            out.display(),
+            input.display()
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// Runs `vorrt merge`: checks that the inputs are shards of one batch
+/// (their `run.json` agree on generator, folder, seed, count and number of
+/// shards, each shard once) and that every shard is there (unless
+/// `--allow-missing`, which warns instead), and writes the merged rows,
+/// summary, plots and `run.json`.
+///
+/// # Errors
+/// [`CliError::BadInput`] when an input cannot be read or does not belong,
+/// when `--out` is an input, or when a shard is missing without
+/// `--allow-missing`; [`CliError::Output`] when the output cannot be written.
 pub(crate) fn merge_command(args: &MergeArgs) -> Result<ExitStatus, CliError> {
+    refuse_out_among_inputs(&args.inputs, &args.out)?;
     let infos = args
         .inputs
         .iter()
         .map(|input| RunInfo::read(input))
         .collect::<Result<Vec<_>, _>>()?;
     let info = merged_info(&args.inputs, &infos)?;
+    if !info.missing_shards.is_empty() && !args.allow_missing {
+        return Err(CliError::BadInput(format!(
+            "shards missing from the merge: {} (give every shard of the batch, or --allow-missing to merge a part of it)",
+            info.missing_shards.join(", ")
+        )));
+    }
     let rows = batch::read_shards(&args.inputs).map_err(batch_error)?;
     prepare_out(&args.out)?;
     let summary = write_all(&rows, &args.out)?;

@@ -5,8 +5,9 @@
 //! [`vorrt_scenarios::BatchRow`]), `summary.json`
 //! ([`vorrt_scenarios::BatchSummary`]), `run.json` (how the batch was made:
 //! generator, seed, shard, wall time), `min_distance.svg`,
-//! `planning_time.svg`, and `failures/` with the scenario file of every run
-//! that was not a success. `merge` writes the same rows, summary and plots
+//! `planning_time.svg`, `failures/` with the scenario file of every run
+//! that was not a success, and `findings/` with that of every run that
+//! succeeded with a COLREGs finding. `merge` writes the same rows, summary and plots
 //! for several shard folders together.
 
 mod histogram;
@@ -161,7 +162,9 @@ pub(crate) fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
     let started = Instant::now();
     let (items, generator) = items_of(&args.generator, args.generate, args.dir.as_deref())?;
     prepare_out(&args.out)?;
-    clean_failures(&args.out)?;
+    for folder in [FAILURES, FINDINGS] {
+        clean_saved(&args.out, folder)?;
+    }
     let shard = args.generator.shard()?;
     let pool = {
         let mut builder = rayon::ThreadPoolBuilder::new();
@@ -196,7 +199,7 @@ pub(crate) fn batch_command(args: &BatchArgs) -> Result<ExitStatus, CliError> {
     progress.finish();
     let wall_time_s = started.elapsed().as_secs_f64();
     // The scenario files of the failures first: they matter most.
-    write_failures(&items, &rows, &args.out)?;
+    write_saved(&items, &rows, &args.out)?;
     let summary = write_all(&rows, &args.out)?;
     let info = RunInfo {
         vorrt_version: env!("CARGO_PKG_VERSION").to_owned(),
@@ -270,20 +273,38 @@ fn write_scenario(item: &BatchItem, dir: &Path, file: &str) -> Result<PathBuf, C
     Ok(path)
 }
 
-/// The folder of the failures' scenario files.
+/// The folder of the failures' scenario files: runs that were not a
+/// success ([`BatchRow::success`]).
 const FAILURES: &str = "failures";
 
-/// The file name of a failed run's scenario in `failures/`: its batch index
-/// (unique within a batch, and across its shards) and its name.
+/// The folder of the scenario files of runs that succeeded but broke
+/// COLREGs (a finding: not [`BatchRow::compliant`]).
+const FINDINGS: &str = "findings";
+
+/// The file name of a saved run's scenario in `failures/` or `findings/`:
+/// its batch index (unique within a batch, and across its shards) and its name.
 fn failure_file(item: &BatchItem) -> String {
     format!("{:06}-{}.ron", item.index, folder_name(&item.scenario.name))
 }
 
-/// Removes the `*.ron` files a previous batch left in `DIR/failures/`, so
-/// that the folder holds only this batch's failures (documented in
+/// Where a run's scenario is saved: `failures/` when it was not a success,
+/// `findings/` when it succeeded with a COLREGs finding, nowhere when it
+/// succeeded and complied.
+fn saved_folder(row: &BatchRow) -> Option<&'static str> {
+    if !row.success() {
+        Some(FAILURES)
+    } else if !row.compliant {
+        Some(FINDINGS)
+    } else {
+        None
+    }
+}
+
+/// Removes the `*.ron` files a previous batch left in `DIR/<folder>/`, so
+/// that the folder holds only this batch's runs (documented in
 /// `docs/evaluation.md`).
-fn clean_failures(dir: &Path) -> Result<(), CliError> {
-    let folder = dir.join(FAILURES);
+fn clean_saved(dir: &Path, folder: &str) -> Result<(), CliError> {
+    let folder = dir.join(folder);
     let Ok(entries) = std::fs::read_dir(&folder) else {
         return Ok(());
     };
@@ -292,7 +313,7 @@ fn clean_failures(dir: &Path) -> Result<(), CliError> {
         if path.is_file() && path.extension().is_some_and(|extension| extension == "ron") {
             std::fs::remove_file(&path).map_err(|error| {
                 CliError::Output(format!(
-                    "cannot remove the old failure {}: {error}",
+                    "cannot remove the old saved run {}: {error}",
                     path.display()
                 ))
             })?;
@@ -301,22 +322,17 @@ fn clean_failures(dir: &Path) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Writes the scenario of every run that was not a success into
-/// `DIR/failures/` as [`failure_file`] (nothing, and no folder, when all
-/// succeeded).
-fn write_failures(items: &[BatchItem], rows: &[BatchRow], dir: &Path) -> Result<(), CliError> {
-    let failed: Vec<&BatchItem> = items
-        .iter()
-        .zip(rows)
-        .filter(|(_, row)| !row.success())
-        .map(|(item, _)| item)
-        .collect();
-    if failed.is_empty() {
-        return Ok(());
-    }
-    let folder = dir.join(FAILURES);
-    std::fs::create_dir_all(&folder).map_err(output_error(&folder))?;
-    for item in failed {
+/// Writes the scenario of every run that was not a success, or had a
+/// COLREGs finding, into `DIR/failures/` or `DIR/findings/`
+/// ([`saved_folder`]) as [`failure_file`] (nothing, and no folder, when
+/// there is none of its kind).
+fn write_saved(items: &[BatchItem], rows: &[BatchRow], dir: &Path) -> Result<(), CliError> {
+    for (item, row) in items.iter().zip(rows) {
+        let Some(folder) = saved_folder(row) else {
+            continue;
+        };
+        let folder = dir.join(folder);
+        std::fs::create_dir_all(&folder).map_err(output_error(&folder))?;
         let mut item = item.clone();
         // The file carries the seed it was run with, so `vorrt simulate`
         // repeats the run.
@@ -356,11 +372,9 @@ impl Progress {
     fn report(&self, done: usize, row: &BatchRow) {
         let outcome = if !row.error.is_empty() {
             format!("error: {}", row.error)
-        } else if row.success() {
-            format!("ok, min {:.0} m", row.min_distance_m)
-        } else {
+        } else if !row.success() {
             format!(
-                "FAIL (goal {}, min {:.0} m, collision {})",
+                "unsafe (goal {}, min {:.0} m, collision {})",
                 if row.reached_goal {
                     "reached"
                 } else {
@@ -369,11 +383,23 @@ impl Progress {
                 row.min_distance_m,
                 row.collision
             )
+        } else if !row.compliant {
+            format!(
+                "findings: {}, min {:.0} m",
+                if row.violations.is_empty() {
+                    "not judged"
+                } else {
+                    &row.violations
+                },
+                row.min_distance_m
+            )
+        } else {
+            format!("compliant, min {:.0} m", row.min_distance_m)
         };
         match &self.bar {
             Some(bar) => {
                 bar.set_position(done as u64);
-                if !row.success() {
+                if saved_folder(row).is_some() {
                     bar.println(format!("{}: {outcome}", row.name));
                 }
             }
@@ -405,10 +431,12 @@ pub(crate) fn summary_table(summary: &BatchSummary) -> String {
     if summary.errors > 0 {
         let _ = writeln!(text, "could not run        {}", summary.errors);
     }
+    // Success leaves compliance out: the two side by side.
     let _ = writeln!(
         text,
-        "success              {}",
-        percent(summary.success_rate)
+        "success              {}   compliant {}",
+        percent(summary.success_rate),
+        percent(summary.compliance_rate)
     );
     let _ = writeln!(
         text,
@@ -425,11 +453,7 @@ pub(crate) fn summary_table(summary: &BatchSummary) -> String {
         "clearance violated   {}",
         percent(summary.clearance_violation_rate)
     );
-    let _ = writeln!(
-        text,
-        "compliant            {}",
-        percent(summary.compliance_rate)
-    );
+    let _ = writeln!(text, "COLREGs by rule");
     for rule in &summary.rules {
         let _ = writeln!(
             text,
@@ -450,6 +474,7 @@ pub(crate) fn summary_table(summary: &BatchSummary) -> String {
     );
     for (name, p, digits) in [
         ("path overhead %    ", &summary.path_overhead_pct, 1),
+        ("time overhead %    ", &summary.time_overhead_pct, 1),
         ("planning ms/run    ", &summary.planning_time_ms, 0),
         ("planning ms/plan   ", &summary.planning_time_per_plan_ms, 1),
         ("replans/run        ", &summary.replans, 0),

@@ -95,11 +95,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
         None => format!("no (not within {:.0} m of it)", input.goal_tolerance_m),
     };
     let _ = writeln!(text, "reached goal:   {arrival}");
-    let _ = writeln!(
-        text,
-        "path:           {:.0} m sailed vs {:.0} m straight: overhead {:.1} %",
-        report.path_length_m, report.straight_length_m, report.path_overhead_pct
-    );
+    report.write_overhead_lines(&mut text);
     let quality = &report.path_quality;
     let _ = writeln!(
         text,

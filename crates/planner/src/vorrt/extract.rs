@@ -21,7 +21,7 @@
 use super::Planner;
 use crate::config::PlannerConfig;
 use crate::constraint::Constraint;
-use crate::plan::{Plan, PlanStatistics, RejectionCounts, Waypoint};
+use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::Recording;
 use crate::safety::SafetyChecker;
@@ -289,12 +289,20 @@ impl<C: Constraint> Planner<C> {
                 self.search_legs(
                     problem, &sailing, model, config, rung.shape, &goal, false, refused,
                 )
+                .map(|legs| (rung.shape, legs))
             },
         );
         if sailing.expired.get() {
             return Err(Expired);
         }
-        Ok(legs.map(|legs| self.assemble(problem, &sailing, 0, legs, statistics)))
+        Ok(legs.map(|(shape, legs)| {
+            let mut plan = self.assemble(problem, &sailing, 0, legs, statistics);
+            plan.statistics.source = match shape {
+                ManeuverShape::OneAlteration => PlanSource::OneAlteration,
+                ManeuverShape::TwoAlterations => PlanSource::TwoAlterations,
+            };
+            plan
+        }))
     }
 
     /// The plan along the tree's branch to `node`: the branch itself for
@@ -326,13 +334,9 @@ impl<C: Constraint> Planner<C> {
                     deadline,
                 );
             }
-            return Ok(Some(self.assemble(
-                problem,
-                &sailing,
-                0,
-                Vec::new(),
-                statistics,
-            )));
+            let mut plan = self.assemble(problem, &sailing, 0, Vec::new(), statistics);
+            plan.statistics.source = PlanSource::Tree;
+            return Ok(Some(plan));
         }
         let branch = self.tree.branch(node);
         let legs = match sailing.model {
@@ -361,9 +365,9 @@ impl<C: Constraint> Planner<C> {
                 legs
             }
         };
-        Ok(Some(
-            self.assemble(problem, &sailing, node, legs, statistics),
-        ))
+        let mut plan = self.assemble(problem, &sailing, node, legs, statistics);
+        plan.statistics.source = PlanSource::Tree;
+        Ok(Some(plan))
     }
 
     /// The branch's own steps as legs (instantaneous turns).

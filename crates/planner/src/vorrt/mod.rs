@@ -229,12 +229,7 @@ impl<C: Constraint> Planner<C> {
         let started = Instant::now();
         let config = self.config;
         // The searches without samples end within the time budget too.
-        // (A budget too large for the clock is no deadline.)
-        let deadline = config.time_budget_s.and_then(|budget_s| {
-            std::time::Duration::try_from_secs_f64(budget_s)
-                .ok()
-                .and_then(|budget| started.checked_add(budget))
-        });
+        let deadline = deadline_of(&config, started);
         let own = problem.ownship;
         self.tracks.clear();
         self.tracks
@@ -484,6 +479,16 @@ impl<C: Constraint> Planner<C> {
         }
         Ok(Growth::Exhausted)
     }
+}
+
+/// When a search started at `started` must end, by `config`'s time budget
+/// (`None` without one, or for a budget too large for the clock).
+fn deadline_of(config: &PlannerConfig, started: Instant) -> Option<Instant> {
+    config.time_budget_s.and_then(|budget_s| {
+        std::time::Duration::try_from_secs_f64(budget_s)
+            .ok()
+            .and_then(|budget| started.checked_add(budget))
+    })
 }
 
 /// [`PlannerError::BudgetExhausted`] after a search without samples (the

@@ -88,6 +88,17 @@ pub struct BatchRow {
     /// Planner calls after which ownship departed from the rules.
     #[serde(default)]
     pub rule_departures: usize,
+    /// Extra time over the straight route at the service speed, percent
+    /// ([`Evaluation::time_overhead_pct`]): a slowed ship's overhead, which
+    /// the path overhead does not show. Not a number in rows written before
+    /// the column existed.
+    #[serde(default = "not_recorded")]
+    pub time_overhead_pct: f64,
+}
+
+/// A value a row read back from an older `rows.csv` lacks.
+fn not_recorded() -> f64 {
+    f64::NAN
 }
 
 impl BatchRow {
@@ -148,6 +159,7 @@ impl BatchRow {
             give_way_apparent: 0,
             give_way_early: 0,
             rule_departures: 0,
+            time_overhead_pct: f64::NAN,
         }
     }
 
@@ -216,6 +228,7 @@ impl BatchRow {
                 )
             }),
             rule_departures: evaluation.rule_departures,
+            time_overhead_pct: evaluation.time_overhead_pct,
         }
     }
 }

@@ -102,6 +102,9 @@ pub struct BatchSummary {
     pub min_distance_m: Percentiles,
     /// Path overhead per run, percent.
     pub path_overhead_pct: Percentiles,
+    /// Time overhead per run (at the service speed), percent.
+    #[serde(default)]
+    pub time_overhead_pct: Percentiles,
     /// Planning time per run, milliseconds.
     pub planning_time_ms: Percentiles,
     /// Mean planning time per planner call per run, milliseconds.
@@ -186,6 +189,7 @@ impl BatchSummary {
             rules,
             min_distance_m: Percentiles::of(ran.iter().map(|row| row.min_distance_m)),
             path_overhead_pct: Percentiles::of(ran.iter().map(|row| row.path_overhead_pct)),
+            time_overhead_pct: Percentiles::of(ran.iter().map(|row| row.time_overhead_pct)),
             planning_time_ms: Percentiles::of(ran.iter().map(|row| row.planning_time_ms)),
             planning_time_per_plan_ms: Percentiles::of(
                 ran.iter().map(|row| row.planning_time_per_plan_ms),

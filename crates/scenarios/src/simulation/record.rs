@@ -49,6 +49,11 @@ pub struct PlanEvent {
     pub statistics: PlanStatistics,
     /// The plan's waypoints (empty on failure).
     pub waypoints: Vec<Waypoint>,
+    /// Ownship's planned speed at each waypoint, m/s
+    /// (`Plan::waypoint_speeds_mps`; empty on failure, and in records
+    /// written before the field existed).
+    #[serde(default)]
+    pub speeds_mps: Vec<f64>,
     /// On failure, the evasive course ownship turned to, degrees (`None` when
     /// it kept its previous plan, still safe).
     pub evasive_course_deg: Option<f64>,
