@@ -16,7 +16,9 @@ use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
 use vorrt_planner::validity::EncounterState;
-use vorrt_planner::{Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
+use vorrt_planner::{
+    Constraint, NoConstraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem,
+};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
@@ -107,14 +109,21 @@ pub struct LoopState<'a> {
 
 /// One planner per level of the graded fallback, from all the rules down
 /// (rules 2(b), 17(b)).
-fn graded_planners(config: &PlannerConfig) -> Result<Vec<Planner>, PlannerError> {
+/// Every level keeps `constraint`: it is no duty the fallback may drop.
+fn graded_planners<C: Constraint + Clone>(
+    config: &PlannerConfig,
+    constraint: &C,
+) -> Result<Vec<Planner<C>>, PlannerError> {
     let mut planners = Vec::new();
     let mut level = Some(config.compliance);
     while let Some(compliance) = level {
-        planners.push(Planner::new(PlannerConfig {
-            compliance,
-            ..*config
-        })?);
+        planners.push(Planner::with_constraint(
+            PlannerConfig {
+                compliance,
+                ..*config
+            },
+            constraint.clone(),
+        )?);
         level = compliance.relaxed();
     }
     Ok(planners)
@@ -122,9 +131,10 @@ fn graded_planners(config: &PlannerConfig) -> Result<Vec<Planner>, PlannerError>
 
 /// What stays the same for the whole run.
 #[derive(Debug)]
-struct Setup {
-    /// One planner per level of the graded fallback, all the rules first.
-    planners: Vec<Planner>,
+struct Setup<C> {
+    /// One planner per level of the graded fallback, all the rules first,
+    /// each keeping the run's constraint.
+    planners: Vec<Planner<C>>,
     config: PlannerConfig,
     seed: u64,
     time_step_s: f64,
@@ -145,10 +155,12 @@ struct Setup {
 /// [module documentation](crate::simulation) for what happens in a step).
 ///
 /// [`simulate`](super::simulate) is [`ClosedLoop::run`]; stepping by hand
-/// gives the same [`SimulationRecord`].
+/// gives the same [`SimulationRecord`]. Ownship's planner keeps a user
+/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; none by default):
+/// every plan, every check of the plan in force and the evasive manoeuvre.
 #[derive(Debug)]
-pub struct ClosedLoop {
-    setup: Setup,
+pub struct ClosedLoop<C = NoConstraint> {
+    setup: Setup<C>,
     step: usize,
     time_s: f64,
     own: VesselState,
@@ -245,13 +257,32 @@ impl ClosedLoop {
         seed: u64,
         motions: Vec<Box<dyn TargetMotion>>,
     ) -> Result<Self, ScenarioError> {
+        ClosedLoop::with_constraint(scenario, config, seed, motions, NoConstraint)
+    }
+}
+
+impl<C: Constraint + Clone> ClosedLoop<C> {
+    /// As [`with_motions`](ClosedLoop::with_motions), with ownship's
+    /// planner keeping `constraint` (land, a no-go area, a lane) at every
+    /// level of the graded fallback, in its check of the plan in force and
+    /// in the evasive manoeuvre.
+    ///
+    /// # Errors
+    /// As [`with_motions`](ClosedLoop::with_motions).
+    pub fn with_constraint(
+        scenario: &Scenario,
+        config: &PlannerConfig,
+        seed: u64,
+        motions: Vec<Box<dyn TargetMotion>>,
+        constraint: C,
+    ) -> Result<Self, ScenarioError> {
         let invalid = |field: &str, problem: String| ScenarioError::Invalid {
             file: scenario.source.clone(),
             field: field.into(),
             problem,
         };
-        let planners =
-            graded_planners(config).map_err(|error| invalid("planner", error.to_string()))?;
+        let planners = graded_planners(config, &constraint)
+            .map_err(|error| invalid("planner", error.to_string()))?;
         if motions.len() != scenario.targets.len() {
             return Err(invalid(
                 "targets",

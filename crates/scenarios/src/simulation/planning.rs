@@ -6,8 +6,8 @@ use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
-    Compliance, EvasionSearch, EvasiveManeuver, Plan, PlanStatistics, Planner, PlanningProblem,
-    SearchEffort, Waypoint, evasive_leg_holding,
+    Compliance, Constraint, EvasionSearch, EvasiveManeuver, Plan, PlanStatistics, Planner,
+    PlanningProblem, SearchEffort, Waypoint, evasive_leg_holding,
 };
 
 use super::record::{PlanEvent, PlanTrigger};
@@ -146,8 +146,8 @@ struct Attempts {
 /// search of a stricter level is not asked (`Planner::would_repeat`: no move
 /// was refused for a duty it drops, so it would draw the same samples and
 /// fail the same way).
-pub(super) fn plan_now(
-    planners: &mut [Planner],
+pub(super) fn plan_now<C: Constraint>(
+    planners: &mut [Planner<C>],
     problem: &PlanningProblem,
     model: &OwnshipModel,
     call: &PlanCall,
@@ -202,8 +202,8 @@ pub(super) fn plan_now(
 /// The searches of one planner call, from all the rules down: the first
 /// plan found with the level it keeps (`None` if every level failed), and
 /// what every search spent.
-fn search(
-    planners: &mut [Planner],
+fn search<C: Constraint>(
+    planners: &mut [Planner<C>],
     problem: &PlanningProblem,
     call: &PlanCall,
 ) -> (Option<(Plan, Compliance)>, Attempts) {
@@ -259,8 +259,8 @@ fn search(
 /// validity check still accepts the rest of it, or else puts the evasive
 /// manoeuvre in force (the one in force held unless another is clearly
 /// better); records the failed call.
-fn fall_back(
-    planners: &[Planner],
+fn fall_back<C: Constraint>(
+    planners: &[Planner<C>],
     problem: &PlanningProblem,
     model: &OwnshipModel,
     call: &PlanCall,
