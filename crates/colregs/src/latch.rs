@@ -27,8 +27,29 @@ pub fn has_passed(
     encounter: Encounter,
     parameters: &RuleParameters,
 ) -> bool {
-    let line_of_sight = target.position_m - own.position_m;
-    let own_velocity = own.velocity_mps();
+    has_passed_moving(
+        own.position_m,
+        own.velocity_mps(),
+        target,
+        encounter,
+        parameters,
+    )
+}
+
+/// As [`has_passed`], for ownship at `own_m` with `own_velocity_mps`
+/// already worked out (its [`VesselState::velocity_mps`]): a caller judging
+/// many targets against one state of ownship works it out once.
+#[inline]
+#[must_use]
+pub fn has_passed_moving(
+    own_m: glam::DVec2,
+    own_velocity_mps: glam::DVec2,
+    target: &VesselState,
+    encounter: Encounter,
+    parameters: &RuleParameters,
+) -> bool {
+    let line_of_sight = target.position_m - own_m;
+    let own_velocity = own_velocity_mps;
     let target_velocity = target.velocity_mps();
     let relative_velocity = own_velocity - target_velocity;
     let opening = line_of_sight.dot(relative_velocity) <= 0.0;
@@ -104,8 +125,66 @@ pub fn update_latch_steady(
     time_s: f64,
     parameters: &RuleParameters,
 ) -> Option<EncounterLatch> {
+    latch_step(
+        current,
+        own,
+        || own.velocity_mps(),
+        steady_course_rad,
+        target,
+        time_s,
+        parameters,
+    )
+}
+
+/// As [`update_latch_steady`], with ownship's velocity already worked out
+/// (`own_velocity_mps`, its [`VesselState::velocity_mps`]): a caller
+/// stepping many targets' latches against one state of ownship works it
+/// out once. The same latch as [`update_latch_steady`].
+#[inline]
+#[must_use]
+pub fn update_latch_steady_moving(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    own_velocity_mps: glam::DVec2,
+    steady_course_rad: f64,
+    target: &VesselState,
+    time_s: f64,
+    parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
+    latch_step(
+        current,
+        own,
+        || own_velocity_mps,
+        steady_course_rad,
+        target,
+        time_s,
+        parameters,
+    )
+}
+
+/// The one step behind [`update_latch_steady`] and
+/// [`update_latch_steady_moving`], with ownship's velocity given by
+/// `own_velocity`, asked for only where passing is judged.
+fn latch_step(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    own_velocity: impl Fn() -> glam::DVec2,
+    steady_course_rad: f64,
+    target: &VesselState,
+    time_s: f64,
+    parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
+    let passed = |encounter: Encounter| {
+        has_passed_moving(
+            own.position_m,
+            own_velocity(),
+            target,
+            encounter,
+            parameters,
+        )
+    };
     match current {
-        Some(latch) if has_passed(own, target, latch.encounter, parameters) => None,
+        Some(latch) if passed(latch.encounter) => None,
         Some(latch) => Some(latch),
         None => {
             // Beyond MTD there is no risk (and no need to work out the CPA).
@@ -124,7 +203,7 @@ pub fn update_latch_steady(
                 // Not one that has already passed on the course steered: it
                 // would be released at once and latched again at the next
                 // step, for ever.
-                encounter if has_passed(own, target, encounter, parameters) => None,
+                encounter if passed(encounter) => None,
                 encounter => Some(EncounterLatch::new(encounter, &seen, time_s)),
             }
         }

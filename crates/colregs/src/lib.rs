@@ -19,7 +19,10 @@ pub use compliance::{
 };
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
-pub use latch::{EncounterLatch, has_passed, update_latch, update_latch_steady};
+pub use latch::{
+    EncounterLatch, has_passed, has_passed_moving, update_latch, update_latch_steady,
+    update_latch_steady_moving,
+};
 pub use maneuver::{
     CandidateMotion, ManeuverViolation, check_action, check_alteration, check_heading,
     check_maneuver, check_maneuver_acting, check_motion, stand_on_may_act,

@@ -28,7 +28,9 @@ use glam::DVec2;
 use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
-use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_steady};
+use vorrt_colregs::{
+    EncounterLatch, RuleParameters, VesselState, update_latch_steady, update_latch_steady_moving,
+};
 use vorrt_jfs::{Leg, LinearTrack};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -128,6 +130,13 @@ impl EncounterState {
                 }),
             rules,
         );
+        // Worked out once for all the latched targets, if any (the velocity
+        // `update_latch_steady` works out for each to judge passing).
+        let own_velocity_mps = self
+            .latches
+            .iter()
+            .any(Option::is_some)
+            .then(|| own_then.velocity_mps());
         for ((latch, altered), target) in self
             .latches
             .iter_mut()
@@ -135,8 +144,20 @@ impl EncounterState {
             .zip(states_then)
         {
             let before = *latch;
-            *latch =
-                update_latch_steady(before, own_then, steady_course_rad, &target, time_s, rules);
+            *latch = match (before, own_velocity_mps) {
+                (Some(_), Some(own_velocity_mps)) => update_latch_steady_moving(
+                    before,
+                    own_then,
+                    own_velocity_mps,
+                    steady_course_rad,
+                    &target,
+                    time_s,
+                    rules,
+                ),
+                _ => {
+                    update_latch_steady(before, own_then, steady_course_rad, &target, time_s, rules)
+                }
+            };
             *altered = alteration_made(
                 before,
                 *latch,
