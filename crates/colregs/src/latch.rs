@@ -29,28 +29,28 @@ pub fn has_passed(
 ) -> bool {
     has_passed_moving(
         own.position_m,
-        own.velocity_mps(),
+        (own.velocity_mps(), target.velocity_mps()),
         target,
         encounter,
         parameters,
     )
 }
 
-/// As [`has_passed`], for ownship at `own_m` with `own_velocity_mps`
-/// already worked out (its [`VesselState::velocity_mps`]): a caller judging
-/// many targets against one state of ownship works it out once.
+/// As [`has_passed`], for ownship at `own_m`, with the two velocities
+/// already worked out (`velocities_mps`: ownship's and the target's
+/// [`VesselState::velocity_mps`]): a caller judging many targets against one
+/// state of ownship, or one target along many, works them out once.
 #[inline]
 #[must_use]
 pub fn has_passed_moving(
     own_m: glam::DVec2,
-    own_velocity_mps: glam::DVec2,
+    velocities_mps: (glam::DVec2, glam::DVec2),
     target: &VesselState,
     encounter: Encounter,
     parameters: &RuleParameters,
 ) -> bool {
     let line_of_sight = target.position_m - own_m;
-    let own_velocity = own_velocity_mps;
-    let target_velocity = target.velocity_mps();
+    let (own_velocity, target_velocity) = velocities_mps;
     let relative_velocity = own_velocity - target_velocity;
     let opening = line_of_sight.dot(relative_velocity) <= 0.0;
     if !opening {
@@ -128,7 +128,7 @@ pub fn update_latch_steady(
     latch_step(
         current,
         own,
-        || own.velocity_mps(),
+        || (own.velocity_mps(), target.velocity_mps()),
         steady_course_rad,
         target,
         time_s,
@@ -136,16 +136,17 @@ pub fn update_latch_steady(
     )
 }
 
-/// As [`update_latch_steady`], with ownship's velocity already worked out
-/// (`own_velocity_mps`, its [`VesselState::velocity_mps`]): a caller
-/// stepping many targets' latches against one state of ownship works it
-/// out once. The same latch as [`update_latch_steady`].
+/// As [`update_latch_steady`], with the two velocities already worked out
+/// (`velocities_mps`: ownship's and the target's
+/// [`VesselState::velocity_mps`]): a caller stepping many targets' latches
+/// against one state of ownship, or one target's along many, works them out
+/// once. The same latch as [`update_latch_steady`].
 #[inline]
 #[must_use]
 pub fn update_latch_steady_moving(
     current: Option<EncounterLatch>,
     own: &VesselState,
-    own_velocity_mps: glam::DVec2,
+    velocities_mps: (glam::DVec2, glam::DVec2),
     steady_course_rad: f64,
     target: &VesselState,
     time_s: f64,
@@ -154,7 +155,7 @@ pub fn update_latch_steady_moving(
     latch_step(
         current,
         own,
-        || own_velocity_mps,
+        || velocities_mps,
         steady_course_rad,
         target,
         time_s,
@@ -163,25 +164,19 @@ pub fn update_latch_steady_moving(
 }
 
 /// The one step behind [`update_latch_steady`] and
-/// [`update_latch_steady_moving`], with ownship's velocity given by
-/// `own_velocity`, asked for only where passing is judged.
+/// [`update_latch_steady_moving`], with ownship's and the target's
+/// velocities given by `velocities`, asked for only where passing is judged.
 fn latch_step(
     current: Option<EncounterLatch>,
     own: &VesselState,
-    own_velocity: impl Fn() -> glam::DVec2,
+    velocities: impl Fn() -> (glam::DVec2, glam::DVec2),
     steady_course_rad: f64,
     target: &VesselState,
     time_s: f64,
     parameters: &RuleParameters,
 ) -> Option<EncounterLatch> {
     let passed = |encounter: Encounter| {
-        has_passed_moving(
-            own.position_m,
-            own_velocity(),
-            target,
-            encounter,
-            parameters,
-        )
+        has_passed_moving(own.position_m, velocities(), target, encounter, parameters)
     };
     match current {
         Some(latch) if passed(latch.encounter) => None,

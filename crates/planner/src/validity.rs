@@ -73,8 +73,33 @@ impl EncounterState {
             steady_course_rad,
             tracks.iter().map(|track| track.position_at(elapsed_s)),
             tracks.iter().map(|track| track.state_at(elapsed_s)),
-            time_s,
-            rules,
+            (time_s, rules),
+            None,
+        );
+    }
+
+    /// As [`advance`](Self::advance) along `checker`'s tracks, with its
+    /// clock and rules, keeping in `known` (one slot a target, made once
+    /// some encounter is in force) each target's velocity for the course and
+    /// speed it had when last worked out, to be reused while they stay the
+    /// same (along a leg): the same velocities, so the same encounters.
+    pub(crate) fn advance_reusing<C: Constraint>(
+        &mut self,
+        own_then: &VesselState,
+        steady_course_rad: f64,
+        checker: &SafetyChecker<'_, C>,
+        elapsed_s: f64,
+        known: &mut Vec<KnownVelocity>,
+    ) {
+        let tracks = checker.tracks();
+        let clock = (checker.start_time_s() + elapsed_s, &checker.config().rules);
+        self.advance_with(
+            own_then,
+            steady_course_rad,
+            tracks.iter().map(|track| track.position_at(elapsed_s)),
+            tracks.iter().map(|track| track.state_at(elapsed_s)),
+            clock,
+            Some(known),
         );
     }
 
@@ -99,24 +124,26 @@ impl EncounterState {
             steady_course_rad,
             targets_then.iter().map(|target| target.position_m),
             targets_then.iter().copied(),
-            time_s,
-            rules,
+            (time_s, rules),
+            None,
         );
     }
 
     /// The one propagation behind [`advance`](Self::advance) and
     /// [`advance_to`](Self::advance_to), with the targets' positions and
     /// states then: the ranges need only positions, which a track gives for
-    /// less than its state.
+    /// less than its state; `clock` is `time_s` and the rules; `known` as
+    /// for [`advance_reusing`](Self::advance_reusing) (`None`: none kept).
     fn advance_with(
         &mut self,
         own_then: &VesselState,
         steady_course_rad: f64,
         positions_then: impl Iterator<Item = DVec2>,
         states_then: impl Iterator<Item = VesselState>,
-        time_s: f64,
-        rules: &RuleParameters,
+        clock: (f64, &RuleParameters),
+        mut known: Option<&mut Vec<KnownVelocity>>,
     ) {
+        let (time_s, rules) = clock;
         // Whether ownship was acting for some vessel up to now (giving way,
         // or free to act within the action range): a stand-on encounter
         // then carries the course it was free to take.
@@ -137,18 +164,31 @@ impl EncounterState {
             .iter()
             .any(Option::is_some)
             .then(|| own_then.velocity_mps());
-        for ((latch, altered), target) in self
+        if let Some(known) = known.as_deref_mut().filter(|_| own_velocity_mps.is_some()) {
+            known.resize(self.latches.len(), None);
+        }
+        for (index, ((latch, altered), target)) in self
             .latches
             .iter_mut()
             .zip(self.alterations.iter_mut())
             .zip(states_then)
+            .enumerate()
         {
             let before = *latch;
             *latch = match (before, own_velocity_mps) {
                 (Some(_), Some(own_velocity_mps)) => update_latch_steady_moving(
                     before,
                     own_then,
-                    own_velocity_mps,
+                    (
+                        own_velocity_mps,
+                        known
+                            .as_deref_mut()
+                            .and_then(|known| known.get_mut(index))
+                            .map_or_else(
+                                || target.velocity_mps(),
+                                |slot| velocity_of(slot, &target),
+                            ),
+                    ),
                     steady_course_rad,
                     &target,
                     time_s,
@@ -165,6 +205,28 @@ impl EncounterState {
                 own_then.course_rad,
                 acting_for_others,
             );
+        }
+    }
+}
+
+/// A target's velocity ([`VesselState::velocity_mps`]) with the course and
+/// speed it was worked out for, radians, m/s, m/s; `None` before the first.
+pub(crate) type KnownVelocity = Option<(f64, f64, DVec2)>;
+
+/// `target`'s velocity: the one kept in `known` if worked out for the very
+/// same course and speed (the same bits), otherwise worked out and kept.
+fn velocity_of(known: &mut KnownVelocity, target: &VesselState) -> DVec2 {
+    match *known {
+        Some((course_rad, speed_mps, velocity_mps))
+            if course_rad.to_bits() == target.course_rad.to_bits()
+                && speed_mps.to_bits() == target.speed_mps.to_bits() =>
+        {
+            velocity_mps
+        }
+        _ => {
+            let velocity_mps = target.velocity_mps();
+            *known = Some((target.course_rad, target.speed_mps, velocity_mps));
+            velocity_mps
         }
     }
 }
@@ -233,6 +295,9 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         // against the course a window before it arose: two windows.
         let settled_until_s =
             start_elapsed_s + leg.turn_duration_s() + 2.0 * STEADY_COURSE_WINDOW_S;
+        // Each target's velocity, reused along the leg while its course and
+        // speed stay the same.
+        let mut kept: Vec<KnownVelocity> = Vec::new();
         for piece in leg.pieces(self.config().step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -299,14 +364,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 speed_mps: piece.velocity_mps.length(),
                 ..*self.ownship()
             };
-            state.advance(
-                &own_then,
-                steady_course_rad,
-                self.tracks(),
-                end_elapsed_s,
-                self.start_time_s() + end_elapsed_s,
-                &self.config().rules,
-            );
+            state.advance_reusing(&own_then, steady_course_rad, self, end_elapsed_s, &mut kept);
         }
         Ok(())
     }
