@@ -16,6 +16,7 @@ mod import_ais;
 mod judge;
 mod plot;
 mod progress;
+mod replay;
 pub mod report;
 mod run;
 

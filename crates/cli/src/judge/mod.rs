@@ -192,9 +192,16 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         .map_err(|error| CliError::Output(format!("cannot write {}: {error}", path.display())))?;
     crate::plot::write_plots(&rebuilt.scenario, &rebuilt.record, &evaluation, &dir)
         .map_err(CliError::Output)?;
+    crate::replay::write_replay(
+        &rebuilt.scenario,
+        &rebuilt.record,
+        &evaluation,
+        &judgement.report,
+        &dir,
+    )?;
     console::print(&output::table(&judgement));
     console::line(&format!(
-        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png}}",
+        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,replay.html}}",
         dir.display()
     ));
     Ok(if judgement.safe_and_compliant {
