@@ -243,15 +243,27 @@
     }
     ctx.restore();
   }
-  function showsLabel(v) {
+  // Targets named on the chart: all of a small encounter; in a crowd, the
+  // selected one, any that broke d_th and the five closest passes of those
+  // with risk of collision (the list beside names every one).
+  const named = new Set();
+  (function () {
+    const risky = targets.filter(function (v) { return v.encounter && v.encounter.risk_time_s !== null; });
+    if (targets.length <= 8) { for (const v of targets) named.add(v.index); return; }
+    for (const v of targets) if (v.encounter && !v.encounter.clearance_kept) named.add(v.index);
+    risky.sort(function (a, b) { return a.encounter.min_distance_m - b.encounter.min_distance_m; });
+    for (const v of risky.slice(0, 5)) named.add(v.index);
+  })();
+  function showsLabel(v) { return v.index === selected || named.has(v.index); }
+  function showsApproach(v) {
     const e = v.encounter;
-    return targets.length <= 25 || v.index === selected || (e && (e.risk_time_s !== null || !e.clearance_kept));
+    return v.index === selected || (e && (e.risk_time_s !== null || !e.clearance_kept) && (targets.length <= 25 || named.has(v.index)));
   }
   function drawClosestApproaches(ctx) {
     ctx.save(); ctx.font = "11px sans-serif";
     for (const v of targets) {
       const e = v.encounter;
-      if (!e) continue;
+      if (!e || !showsApproach(v)) continue;
       const a = stateAt(own, e.time_of_min_s), b = stateAt(v, e.time_of_min_s);
       if (!a || !b) continue;
       ctx.strokeStyle = v.colour; ctx.fillStyle = v.colour; ctx.lineWidth = v.index === selected ? 2 : 1;
@@ -302,13 +314,14 @@
     ctx.lineTo(sx(st.east_m + Math.sin(c) * ahead), sy(st.north_m + Math.cos(c) * ahead)); ctx.stroke();
   }
   function drawScaleBar(ctx) {
-    const m = niceStep(110 / view.s);
+    const want = 110 / view.s;
+    const m = want > NM / 2 ? niceStep(want / NM) * NM : niceStep(want);
     const px = m * view.s, x = 14, y = H - 22;
     ctx.save(); ctx.fillStyle = "rgba(255,255,255,0.85)"; ctx.fillRect(x - 6, y - 16, px + 70, 26);
     ctx.strokeStyle = "#000"; ctx.lineWidth = 2;
     ctx.beginPath(); ctx.moveTo(x, y - 5); ctx.lineTo(x, y); ctx.lineTo(x + px, y); ctx.lineTo(x + px, y - 5); ctx.stroke();
     ctx.fillStyle = "#000"; ctx.font = "12px sans-serif";
-    ctx.fillText(distanceLabel(m) + (m >= NM ? "" : " (" + (m / NM).toFixed(2) + " nm)"), x + 4, y - 5);
+    ctx.fillText(distanceLabel(m) + (m >= NM ? " (" + Math.round(m) + " m)" : " (" + +(m / NM).toFixed(3) + " nm)"), x + 4, y - 5);
     ctx.restore();
   }
   function drawNorth(ctx) {
@@ -333,7 +346,7 @@
       const gx = sx(data.goal_m[0]), gy = sy(data.goal_m[1]);
       ctx.save(); ctx.strokeStyle = "#000"; ctx.lineWidth = 2; ctx.beginPath();
       ctx.moveTo(gx - 6, gy - 6); ctx.lineTo(gx + 6, gy + 6); ctx.moveTo(gx + 6, gy - 6); ctx.lineTo(gx - 6, gy + 6);
-      ctx.stroke(); ctx.font = "12px sans-serif"; ctx.fillText("goal", gx + 8, gy + 4); ctx.restore();
+      ctx.stroke(); ctx.font = "12px sans-serif"; ctx.fillStyle = "#000"; ctx.fillText("goal", gx + 8, gy + 4); ctx.restore();
     }
     drawClosestApproaches(ctx);
     const drawn = [];
@@ -347,6 +360,7 @@
       if (v !== own && showsLabel(v)) {
         const e = v.encounter;
         const label = v.name + (e && e.risk_time_s !== null && current >= e.risk_time_s ? " (" + ENCOUNTER_SHORT[e.encounter] + ")" : "");
+        ctx.font = v.index === selected ? "bold 12px sans-serif" : "11px sans-serif";
         ctx.fillStyle = "rgba(255,255,255,0.8)";
         const w = ctx.measureText(label).width;
         ctx.fillRect(sx(st.east_m) + 8, sy(st.north_m) - 20, w + 4, 15);
@@ -358,7 +372,8 @@
       ctx.strokeStyle = DTH_COLOUR; ctx.lineWidth = 1.5; ctx.setLineDash([6, 4]);
       ctx.beginPath(); ctx.arc(sx(o.east_m), sy(o.north_m), data.d_th_m * view.s, 0, 2 * Math.PI); ctx.stroke();
       ctx.setLineDash([]);
-      ctx.fillStyle = DTH_COLOUR; ctx.fillText("d_th " + Math.round(data.d_th_m) + " m", sx(o.east_m) + data.d_th_m * view.s * 0.72 + 3, sy(o.north_m) + data.d_th_m * view.s * 0.72 + 12);
+      const ring = data.d_th_m * view.s;
+      if (ring > 30) { ctx.fillStyle = DTH_COLOUR; ctx.fillText("d_th " + Math.round(data.d_th_m) + " m", sx(o.east_m) + ring * 0.72 + 3, sy(o.north_m) + ring * 0.72 + 12); }
       ctx.fillStyle = "#000"; ctx.font = "bold 12px sans-serif";
       ctx.fillText(own.name, sx(o.east_m) + 10, sy(o.north_m) + 16);
     }
@@ -392,38 +407,43 @@
     const ctx = canvas.getContext("2d"); ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.fillStyle = "#fff"; ctx.fillRect(0, 0, w, h);
     timeAxis(ctx, w, 0, h, true);
-    const rows = [["findings", 10], ["risk / CPA", 26], ["plans", 42]];
+    const rows = [["findings", 10], ["risk / CPA", 28], ["plans", 46]];
     ctx.fillStyle = "#333"; ctx.font = "11px sans-serif";
     for (const [name, y] of rows) ctx.fillText(name, 4, y + 4);
     timelineMarks = [];
     for (const p of data.plans) {
       const x = tx(p.time_s, w);
       ctx.strokeStyle = p.succeeded ? "#2a8a2a" : "#e07b00"; ctx.lineWidth = 2;
-      ctx.beginPath(); ctx.moveTo(x, 36); ctx.lineTo(x, 48); ctx.stroke();
-      timelineMarks.push({ x: x, y: 42, time_s: p.time_s, vessel: -1 });
+      ctx.beginPath(); ctx.moveTo(x, 40); ctx.lineTo(x, 52); ctx.stroke();
+      timelineMarks.push({ x: x, y: 46, time_s: p.time_s, vessel: -1,
+        text: minutes(p.time_s) + ": planner call (" + p.trigger + ")" + (p.succeeded ? "" : ", no plan") });
     }
+    let labelEnd = -Infinity;
+    ctx.font = "10px sans-serif";
     for (const v of targets) {
       const e = v.encounter;
-      if (!e) continue;
+      if (!e || e.risk_time_s === null) continue;
       ctx.fillStyle = v.colour; ctx.strokeStyle = v.colour;
-      if (e.risk_time_s !== null) {
-        const x = tx(e.risk_time_s, w);
-        ctx.beginPath(); ctx.moveTo(x, 20); ctx.lineTo(x - 5, 31); ctx.lineTo(x + 5, 31); ctx.closePath(); ctx.fill();
-        timelineMarks.push({ x: x, y: 26, time_s: e.risk_time_s, vessel: v.index });
-        const x2 = tx(e.time_of_min_s, w);
-        ctx.lineWidth = 2; ctx.beginPath(); ctx.moveTo(x2, 20); ctx.lineTo(x2, 32); ctx.stroke();
-        timelineMarks.push({ x: x2, y: 26, time_s: e.time_of_min_s, vessel: v.index });
-      }
+      const x = tx(e.risk_time_s, w);
+      ctx.beginPath(); ctx.moveTo(x, 22); ctx.lineTo(x - 5, 33); ctx.lineTo(x + 5, 33); ctx.closePath(); ctx.fill();
+      timelineMarks.push({ x: x, y: 28, time_s: e.risk_time_s, vessel: v.index,
+        text: minutes(e.risk_time_s) + ": risk of collision with " + v.name + ", " + ENCOUNTER_SHORT[e.encounter] });
+      // The classification beside its triangle where there is room.
+      const label = v.name + " " + ENCOUNTER_SHORT[e.encounter];
+      if (x + 7 > labelEnd) { ctx.fillText(label, x + 7, 32); labelEnd = x + 7 + ctx.measureText(label).width + 6; }
+      const x2 = tx(e.time_of_min_s, w);
+      ctx.lineWidth = 2; ctx.beginPath(); ctx.moveTo(x2, 22); ctx.lineTo(x2, 34); ctx.stroke();
+      timelineMarks.push({ x: x2, y: 28, time_s: e.time_of_min_s, vessel: v.index,
+        text: minutes(e.time_of_min_s) + ": closest approach of " + v.name + ", " + Math.round(e.min_distance_m) + " m" });
     }
     data.findings.forEach(function (f) {
       if (f.time_s === null) return;
       const x = tx(f.time_s, w);
       ctx.fillStyle = DTH_COLOUR;
       ctx.beginPath(); ctx.moveTo(x, 3); ctx.lineTo(x + 5, 9); ctx.lineTo(x, 15); ctx.lineTo(x - 5, 9); ctx.closePath(); ctx.fill();
-      timelineMarks.push({ x: x, y: 9, time_s: f.time_s, vessel: vesselIndex(f.vessel) });
+      timelineMarks.push({ x: x, y: 9, time_s: f.time_s, vessel: vesselIndex(f.vessel),
+        text: minutes(f.time_s) + ": " + (f.vessel === null ? "" : f.vessel + ": ") + f.text });
     });
-    ctx.fillStyle = "#888"; ctx.font = "10px sans-serif";
-    ctx.fillText("triangle: risk arose (classification), bar: closest approach, ticks: planner calls (orange: no plan)", MARGIN_L, h - 4);
     timelineCache = canvas;
   }
   function vesselIndex(name) {
@@ -470,8 +490,10 @@
     }
   }
   function distanceRange() {
-    let top = data.d_th_m * 4, far = 0;
-    for (const v of targets) if (v.encounter) top = Math.max(top, v.encounter.min_distance_m * 3);
+    // Up to twice the farthest close pass of a target with risk of
+    // collision (at least 5 d_th): the passes show, not the far starts.
+    let top = data.d_th_m * 5, far = 0;
+    for (const v of targets) if (v.encounter && v.encounter.risk_time_s !== null) top = Math.max(top, v.encounter.min_distance_m * 2);
     for (const d of distances) for (const x of d) far = Math.max(far, x);
     return Math.max(Math.min(top, far), data.d_th_m * 1.5);
   }
@@ -525,8 +547,11 @@
     drawCursor(ctx, c.w, c.h);
     const [pd, ps, pc] = panels(c.h);
     const o = stateAt(own, current);
-    ctx.font = "11px sans-serif"; ctx.fillStyle = "#000";
-    const right = c.w - 250;
+    ctx.font = "11px sans-serif";
+    const right = c.w - 260;
+    ctx.fillStyle = "rgba(255,255,255,0.85)";
+    for (const [y0] of [pd, ps, pc]) ctx.fillRect(right - 4, y0 + 1, 250, 15);
+    ctx.fillStyle = "#000";
     if (o) {
       ctx.fillText(own.name + ": " + o.speed_kn.toFixed(1) + " kn", right, ps[0] + 12);
       ctx.fillText(own.name + ": " + o.course_deg.toFixed(1) + "°", right, pc[0] + 12);
@@ -543,13 +568,14 @@
 
   // ---- side panel ----
   function buildLegend() {
-    const rows = ["<table><tr><th></th><th>vessel</th><th>encounter</th><th>CPA m</th><th>at</th></tr>"];
+    const rows = ["<table><tr><th></th><th>vessel</th><th>encounter (risk at)</th><th>CPA</th></tr>"];
     for (const v of vessels) {
       const e = v.encounter;
-      const enc = e ? (e.risk_time_s === null ? "no risk" : ENCOUNTER_SHORT[e.encounter] + " @ " + minutes(e.risk_time_s)) : "ownship, " + Math.round(v.length_m) + " m";
-      rows.push("<tr class=\"vessel\" data-index=\"" + v.index + "\"><td><span class=\"swatch\" style=\"background:" + v.colour + "\"></span></td><td>" +
+      const enc = e ? (e.risk_time_s === null ? "no risk" : ENCOUNTER_SHORT[e.encounter] + " (" + minutes(e.risk_time_s) + ")") : "ownship, " + Math.round(v.length_m) + " m";
+      const title = e ? "ownship " + e.colregs_role.replace("_", " ") + ", score " + e.score.toFixed(2) + (e.compliant ? "" : ", not compliant") : "";
+      rows.push("<tr class=\"vessel\" data-index=\"" + v.index + "\" title=\"" + escapeHtml(title) + "\"><td><span class=\"swatch\" style=\"background:" + v.colour + "\"></span></td><td>" +
         escapeHtml(v.name) + "</td><td>" + escapeHtml(enc) + "</td><td class=\"num" + (e && !e.clearance_kept ? " bad" : "") + "\">" +
-        (e ? Math.round(e.min_distance_m) : "") + "</td><td class=\"num\">" + (e ? minutes(e.time_of_min_s) : "") + "</td></tr>");
+        (e ? Math.round(e.min_distance_m) + " m, " + minutes(e.time_of_min_s) : "") + "</td></tr>");
     }
     rows.push("</table>");
     $("legend").innerHTML = rows.join("");
@@ -638,18 +664,27 @@
     if (event.key === "ArrowRight" && event.target !== slider) setTime(current + data.time_step_s);
     if (event.key === "ArrowLeft" && event.target !== slider) setTime(current - data.time_step_s);
   });
-  function clickTime(canvas, event, marks) {
-    const rect = canvas.getBoundingClientRect();
-    const x = event.clientX - rect.left, y = event.clientY - rect.top;
+  function nearestMark(marks, x, y) {
     let best = null;
     for (const m of marks || []) {
       const d = Math.hypot(m.x - x, m.y - y);
       if (d < 8 && (!best || d < best[1])) best = [m, d];
     }
+    return best ? best[0] : null;
+  }
+  function clickTime(canvas, event, marks) {
+    const rect = canvas.getBoundingClientRect();
+    const x = event.clientX - rect.left, y = event.clientY - rect.top;
+    const best = nearestMark(marks, x, y);
     pause();
-    if (best) { if (best[0].vessel > 0) select(best[0].vessel); setTime(best[0].time_s); } else setTime(timeAt(x, rect.width));
+    if (best) { if (best.vessel > 0) select(best.vessel); setTime(best.time_s); } else setTime(timeAt(x, rect.width));
   }
   timeline.addEventListener("click", function (event) { clickTime(timeline, event, timelineMarks); });
+  timeline.addEventListener("mousemove", function (event) {
+    const rect = timeline.getBoundingClientRect();
+    const hit = nearestMark(timelineMarks, event.clientX - rect.left, event.clientY - rect.top);
+    timeline.title = hit ? hit.text : "click: go to this time";
+  });
   plots.addEventListener("click", function (event) { clickTime(plots, event, null); });
   // Pan by dragging, zoom with the wheel about the pointer.
   let drag = null;
