@@ -91,20 +91,14 @@ pub(crate) fn finding_marks(evaluation: &Evaluation, report: &Report) -> Vec<Fin
             });
         }
     }
-    marks.extend(
-        report
-            .path_quality
-            .findings
-            .iter()
-            .map(|text| FindingMark {
-                vessel: None,
-                name: "track".to_owned(),
-                text: text.clone(),
-                rule: None,
-                time_s: None,
-                at: "track".to_owned(),
-            }),
-    );
+    marks.extend(report.path_quality.findings.iter().map(|text| FindingMark {
+        vessel: None,
+        name: "track".to_owned(),
+        text: text.clone(),
+        rule: None,
+        time_s: None,
+        at: "track".to_owned(),
+    }));
     marks
 }
 

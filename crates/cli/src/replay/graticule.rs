@@ -85,9 +85,12 @@ pub(crate) fn graticule(frame: &LocalFrame, low: DVec2, high: DVec2) -> Vec<Grat
     ]
     .map(|corner| frame.to_lat_lon_deg(corner));
     let fold = |pick: fn(&(f64, f64)) -> f64| {
-        corners.iter().map(pick).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        })
+        corners
+            .iter()
+            .map(pick)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            })
     };
     let (lat_low, lat_high) = fold(|c| c.0);
     let (lon_low, lon_high) = fold(|c| c.1);
@@ -95,7 +98,8 @@ pub(crate) fn graticule(frame: &LocalFrame, low: DVec2, high: DVec2) -> Vec<Grat
     let lat_step = step_for((lat_high - lat_low) / 3.0);
     let lon_step = step_for((lon_high - lon_low) / 3.0);
     let along = |from: f64, to: f64| {
-        (0..=POINTS_PER_LINE).map(move |i| from + (to - from) * f64::from(i) / f64::from(POINTS_PER_LINE))
+        (0..=POINTS_PER_LINE)
+            .map(move |i| from + (to - from) * f64::from(i) / f64::from(POINTS_PER_LINE))
     };
     let round = |p: DVec2| [(p.x * 10.0).round() / 10.0, (p.y * 10.0).round() / 10.0];
     let mut lines = Vec::new();
@@ -136,7 +140,11 @@ mod tests {
     #[test]
     fn the_graticule_crosses_the_run_on_round_values_where_the_projection_puts_them() {
         let frame = LocalFrame::new(50.0, -1.0);
-        let lines = graticule(&frame, DVec2::new(-5_000.0, -5_000.0), DVec2::new(5_000.0, 5_000.0));
+        let lines = graticule(
+            &frame,
+            DVec2::new(-5_000.0, -5_000.0),
+            DVec2::new(5_000.0, 5_000.0),
+        );
         let parallels: Vec<&GraticuleLine> = lines.iter().filter(|l| l.kind == "lat").collect();
         let meridians: Vec<&GraticuleLine> = lines.iter().filter(|l| l.kind == "lon").collect();
         assert!(parallels.len() >= 3 && meridians.len() >= 3, "{lines:?}");

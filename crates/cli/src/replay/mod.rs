@@ -49,7 +49,8 @@ pub(crate) fn script_safe_json(json: &str) -> String {
 /// `template` with every `{{KEY}}` of `values` replaced in one pass, so that
 /// no value is searched for the keys of another.
 fn fill(template: &str, values: &[(&str, &str)]) -> String {
-    let mut page = String::with_capacity(template.len() + values.iter().map(|(_, v)| v.len()).sum::<usize>());
+    let mut page =
+        String::with_capacity(template.len() + values.iter().map(|(_, v)| v.len()).sum::<usize>());
     let mut rest = template;
     while let Some(start) = rest.find("{{") {
         let Some(length) = rest[start..].find("}}") else {
