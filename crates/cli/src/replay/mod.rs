@@ -46,6 +46,23 @@ pub(crate) fn script_safe_json(json: &str) -> String {
     safe
 }
 
+/// `text` as HTML text: `&`, `<`, `>`, `"` and `'` as character references.
+#[must_use]
+pub(crate) fn escape_html(text: &str) -> String {
+    let mut escaped = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => escaped.push_str("&amp;"),
+            '<' => escaped.push_str("&lt;"),
+            '>' => escaped.push_str("&gt;"),
+            '"' => escaped.push_str("&quot;"),
+            '\'' => escaped.push_str("&#39;"),
+            _ => escaped.push(c),
+        }
+    }
+    escaped
+}
+
 /// `template` with every `{{KEY}}` of `values` replaced in one pass, so that
 /// no value is searched for the keys of another.
 fn fill(template: &str, values: &[(&str, &str)]) -> String {
@@ -76,7 +93,7 @@ fn fill(template: &str, values: &[(&str, &str)]) -> String {
 pub(crate) fn page(data: &ReplayData) -> Result<String, CliError> {
     let json = serde_json::to_string(data)
         .map_err(|error| CliError::Output(format!("cannot write the replay data: {error}")))?;
-    let title = crate::demo::escape(&format!("{} - vorrt replay", data.scenario));
+    let title = escape_html(&format!("{} - vorrt replay", data.scenario));
     Ok(fill(
         TEMPLATE,
         &[
@@ -116,6 +133,14 @@ mod tests {
         for key in ["{{TITLE}}", "{{SCRIPT}}", "{{DATA}}"] {
             assert_eq!(TEMPLATE.matches(key).count(), 1, "{key}");
         }
+    }
+
+    #[test]
+    fn escape_html_escapes_markup() {
+        assert_eq!(
+            escape_html("a</b> & \"c\" 'd'"),
+            "a&lt;/b&gt; &amp; &quot;c&quot; &#39;d&#39;"
+        );
     }
 
     #[test]
