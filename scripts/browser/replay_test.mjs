@@ -125,7 +125,8 @@ async function checkFindings(page, report, label) {
   for (const text of report.path_quality.findings) expected.push("/track");
   const got = listed.map((f) => f.vessel + "/" + f.name);
   check(JSON.stringify([...got].sort()) === JSON.stringify([...expected].sort()),
-    `${label}: findings listed [${got.join(", ")}] are the report's [${expected.join(", ")}]`);
+    `${label}: the ${got.length} findings listed are the report's ${expected.length}` +
+    (got.length <= 6 ? ` [${got.join(", ")}]` : ` (${got.slice(0, 4).join(", ")}, ...)`));
   const timed = listed.find((f) => f.time !== "");
   if (timed) {
     await page.locator(`#findings li.finding[data-name="${timed.name}"]`).first().click();
@@ -161,6 +162,43 @@ async function checkRun(browser, label, dir, reportFile, csvFile = path.join(dir
   check(legendRows === 1 + report.targets.length, `${label}: the vessel list has ${legendRows} rows for ${1 + report.targets.length} vessels`);
   check(problems.length === 0, `${label}: no console error, page error or outside request${problems.length ? ": " + problems.join("; ") : ""}`);
   return { page, data, times, at };
+}
+
+// The page draws land, no-go areas and separation zones when its data has
+// them (the scenario does not carry them yet): a copy of a page with a
+// square of land around a square hole, checked by the colour of pixels
+// inside the land, inside the hole, and in a no-go square.
+async function checkPolygons(browser, dir) {
+  const label = "polygons (tss page with land, a hole and a no-go area)";
+  console.log(label);
+  const html = fs.readFileSync(path.join(dir, "replay.html"), "utf8");
+  const ring = (x0, y0, x1, y1) => [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
+  const land = [[ring(-9000, -5000, -5000, -2000), ring(-8000, -4000, -7000, -3000)]];
+  const noGo = [[ring(-3600, 2600, -2600, 3600)]];
+  const patched = html
+    .replace('"land":[]', '"land":' + JSON.stringify(land))
+    .replace('"no_go":[]', '"no_go":' + JSON.stringify(noGo));
+  check(patched !== html, `${label}: the data has the optional polygon fields`);
+  const file = path.join(dir, "replay-polygons.html");
+  fs.writeFileSync(file, patched);
+  const { page, problems } = await openPage(browser, file);
+  await setSlider(page, 0);
+  const colours = await page.evaluate((points) => {
+    const chart = document.getElementById("chart");
+    const view = window.vorrtReplay.state().view;
+    const dpr = window.devicePixelRatio || 1;
+    const ctx = chart.getContext("2d");
+    return points.map(([x, y]) => {
+      const px = chart.clientWidth / 2 + (x - view.cx) * view.px_per_m;
+      const py = chart.clientHeight / 2 - (y - view.cy) * view.px_per_m;
+      return Array.from(ctx.getImageData(Math.round(px * dpr), Math.round(py * dpr), 1, 1).data);
+    });
+  }, [[-6000, -2500], [-7500, -3500], [-3100, 3100]]);
+  const near = (c, rgb) => rgb.every((v, i) => Math.abs(c[i] - v) <= 12);
+  check(near(colours[0], [0xe9, 0xdc, 0xb5]), `${label}: land is drawn (pixel ${colours[0]})`);
+  check(!near(colours[1], [0xe9, 0xdc, 0xb5]), `${label}: its hole is not (pixel ${colours[1]})`);
+  check(colours[2][0] > colours[2][1] + 20, `${label}: the no-go area is drawn red (pixel ${colours[2]})`);
+  check(problems.length === 0, `${label}: no console error, page error or outside request${problems.length ? ": " + problems.join("; ") : ""}`);
 }
 
 // Ownship and `count` targets on straight tracks, as trajectory.csv: a
@@ -207,6 +245,7 @@ async function main() {
     const tss = await checkRun(browser, "paper/tss (simulate)", path.join(out, "tss"), "report.json");
     check(tss.data.lanes.length === 1, "paper/tss: the westbound lane is in the data");
     await screenshots(tss.page, [tss.at(0.25), tss.at(0.5), tss.at(0.75)], "tss");
+    await checkPolygons(browser, path.join(out, "tss"));
     const imazu = await checkRun(browser, "imazu_13 (simulate)", path.join(out, "imazu_13"), "report.json");
     await screenshots(imazu.page, [imazu.at(0.2), imazu.at(0.45), imazu.at(0.7)], "imazu_13");
     const geo = await checkRun(browser, "geo/channel_ais (simulate)", path.join(out, "channel_ais"), "report.json");

@@ -428,9 +428,16 @@
       ctx.beginPath(); ctx.moveTo(x, 22); ctx.lineTo(x - 5, 33); ctx.lineTo(x + 5, 33); ctx.closePath(); ctx.fill();
       timelineMarks.push({ x: x, y: 28, time_s: e.risk_time_s, vessel: v.index,
         text: minutes(e.risk_time_s) + ": risk of collision with " + v.name + ", " + ENCOUNTER_SHORT[e.encounter] });
-      // The classification beside its triangle where there is room.
+      // The classification beside its triangle where there is room; risks
+      // that arose together share one label.
       const label = v.name + " " + ENCOUNTER_SHORT[e.encounter];
-      if (x + 7 > labelEnd) { ctx.fillText(label, x + 7, 32); labelEnd = x + 7 + ctx.measureText(label).width + 6; }
+      if (x + 7 > labelEnd) {
+        const together = targets.filter(function (u) {
+          return u !== v && u.encounter && u.encounter.risk_time_s !== null && Math.abs(tx(u.encounter.risk_time_s, w) - x) < 3;
+        }).map(function (u) { return u.name + " " + ENCOUNTER_SHORT[u.encounter.encounter]; });
+        const text = [label].concat(together.slice(0, 3)).join("; ") + (together.length > 3 ? "; +" + (together.length - 3) : "");
+        ctx.fillText(text, x + 7, 32); labelEnd = x + 7 + ctx.measureText(text).width + 6;
+      }
       const x2 = tx(e.time_of_min_s, w);
       ctx.lineWidth = 2; ctx.beginPath(); ctx.moveTo(x2, 22); ctx.lineTo(x2, 34); ctx.stroke();
       timelineMarks.push({ x: x2, y: 28, time_s: e.time_of_min_s, vessel: v.index,
@@ -545,25 +552,18 @@
     if (!plotsCache || plotsCache.width !== plots.width) renderPlots();
     ctx.drawImage(plotsCache, 0, 0, c.w, c.h);
     drawCursor(ctx, c.w, c.h);
-    const [pd, ps, pc] = panels(c.h);
     const o = stateAt(own, current);
-    ctx.font = "11px sans-serif";
-    const right = c.w - 260;
-    ctx.fillStyle = "rgba(255,255,255,0.85)";
-    for (const [y0] of [pd, ps, pc]) ctx.fillRect(right - 4, y0 + 1, 250, 15);
-    ctx.fillStyle = "#000";
-    if (o) {
-      ctx.fillText(own.name + ": " + o.speed_kn.toFixed(1) + " kn", right, ps[0] + 12);
-      ctx.fillText(own.name + ": " + o.course_deg.toFixed(1) + "°", right, pc[0] + 12);
-    }
+    const parts = [];
+    if (o) parts.push(own.name + " " + o.speed_kn.toFixed(1) + " kn, " + o.course_deg.toFixed(1) + "°");
     let nearest = null;
     for (const v of targets) {
       const st = stateAt(v, current);
       if (!o || !st) continue;
       const d = Math.hypot(st.east_m - o.east_m, st.north_m - o.north_m);
-      if (v.index === selected || (selected < 0 && (!nearest || d < nearest[1]))) nearest = [v, d];
+      if (v.index === selected || (selected < 0 && (!nearest || d < nearest[1]))) nearest = [v, d, st];
     }
-    if (nearest) ctx.fillText((selected > 0 ? "" : "nearest ") + nearest[0].name + ": " + Math.round(nearest[1]) + " m (d_th " + Math.round(data.d_th_m) + " m)", right, pd[0] + 12);
+    if (nearest) parts.push((selected > 0 ? "" : "nearest ") + nearest[0].name + " " + Math.round(nearest[1]) + " m away (d_th " + Math.round(data.d_th_m) + " m), " + nearest[2].speed_kn.toFixed(1) + " kn, " + nearest[2].course_deg.toFixed(1) + "°");
+    $("readout").textContent = "at t = " + clock(current) + ": " + parts.join("; ");
   }
 
   // ---- side panel ----
