@@ -127,6 +127,9 @@ async function checkFindings(page, report, label) {
   check(JSON.stringify([...got].sort()) === JSON.stringify([...expected].sort()),
     `${label}: the ${got.length} findings listed are the report's ${expected.length}` +
     (got.length <= 6 ? ` [${got.join(", ")}]` : ` (${got.slice(0, 4).join(", ")}, ...)`));
+  const onTimeline = (await page.evaluate(() => window.vorrtReplay.state())).timeline_findings;
+  const timedCount = listed.filter((f) => f.time !== "").length;
+  check(onTimeline === timedCount, `${label}: ${onTimeline} findings marked on the timeline for ${timedCount} with a moment`);
   const timed = listed.find((f) => f.time !== "");
   if (timed) {
     await page.locator(`#findings li.finding[data-name="${timed.name}"]`).first().click();
@@ -201,6 +204,29 @@ async function checkPolygons(browser, dir) {
   check(problems.length === 0, `${label}: no console error, page error or outside request${problems.length ? ": " + problems.join("; ") : ""}`);
 }
 
+// Play runs the clock and pause stops it; the wheel zooms and a drag pans.
+async function checkControls(page, label) {
+  await setSlider(page, 0);
+  await page.locator("#speed").selectOption("300");
+  await page.locator("#play").click();
+  await page.waitForFunction(() => window.vorrtReplay.state().time_s > 0, null, { timeout: 10_000 });
+  await page.locator("#play").click();
+  const paused = await page.evaluate(() => window.vorrtReplay.state());
+  check(!paused.playing && paused.time_s > 0, `${label}: play ran the clock to ${paused.time_s.toFixed(1)} s, pause stopped it`);
+  const box = await page.locator("#chart").boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, -300);
+  const zoomed = await page.evaluate(() => window.vorrtReplay.state());
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2, { steps: 4 });
+  await page.mouse.up();
+  await setSlider(page, paused.time_s);
+  const panned = await page.evaluate(() => window.vorrtReplay.state());
+  check(zoomed.view.px_per_m > paused.view.px_per_m * 1.2, `${label}: the wheel zoomed in (${paused.view.px_per_m.toFixed(4)} -> ${zoomed.view.px_per_m.toFixed(4)} px/m)`);
+  check(panned.view.cx < zoomed.view.cx, `${label}: dragging right moved the view west (${zoomed.view.cx.toFixed(0)} -> ${panned.view.cx.toFixed(0)} m east)`);
+  await page.locator("#fit").click();
+}
+
 // Ownship and `count` targets on straight tracks, as trajectory.csv: a
 // judge run with many vessels (no planner, so it is quick in debug builds).
 function manyTargetsCsv(file, count) {
@@ -248,6 +274,7 @@ async function main() {
     await checkPolygons(browser, path.join(out, "tss"));
     const imazu = await checkRun(browser, "imazu_13 (simulate)", path.join(out, "imazu_13"), "report.json");
     await screenshots(imazu.page, [imazu.at(0.2), imazu.at(0.45), imazu.at(0.7)], "imazu_13");
+    await checkControls(imazu.page, "imazu_13 (simulate)");
     const geo = await checkRun(browser, "geo/channel_ais (simulate)", path.join(out, "channel_ais"), "report.json");
     check(geo.data.geo !== null && geo.data.geo.graticule.length >= 4,
       `geo/channel_ais: a latitude/longitude grid of ${geo.data.geo ? geo.data.geo.graticule.length : 0} lines`);

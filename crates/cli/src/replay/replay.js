@@ -382,7 +382,8 @@
     ctx.save(); ctx.fillStyle = "rgba(255,255,255,0.85)"; ctx.fillRect(6, 6, 250, 22);
     ctx.fillStyle = "#000"; ctx.font = "bold 14px sans-serif";
     ctx.fillText("t = " + clock(current) + "  (" + current.toFixed(1) + " s)", 12, 22); ctx.restore();
-    lastDrawn = { time_s: current, vessels: drawn, view: { cx: view.cx, cy: view.cy, px_per_m: view.s } };
+    lastDrawn = { time_s: current, vessels: drawn, view: { cx: view.cx, cy: view.cy, px_per_m: view.s },
+      timeline_findings: timelineMarks.filter(function (m) { return m.finding; }).length };
   }
 
   // ---- timeline and plots: time on x ----
@@ -448,7 +449,7 @@
       const x = tx(f.time_s, w);
       ctx.fillStyle = DTH_COLOUR;
       ctx.beginPath(); ctx.moveTo(x, 3); ctx.lineTo(x + 5, 9); ctx.lineTo(x, 15); ctx.lineTo(x - 5, 9); ctx.closePath(); ctx.fill();
-      timelineMarks.push({ x: x, y: 9, time_s: f.time_s, vessel: vesselIndex(f.vessel),
+      timelineMarks.push({ x: x, y: 9, time_s: f.time_s, vessel: vesselIndex(f.vessel), finding: true,
         text: minutes(f.time_s) + ": " + (f.vessel === null ? "" : f.vessel + ": ") + f.text });
     });
     timelineCache = canvas;
