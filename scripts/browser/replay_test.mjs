@@ -286,6 +286,18 @@ async function main() {
     const size = fs.statSync(path.join(out, "judge_many", "replay.html")).size;
     check(size < 1_000_000, `100 targets: replay.html is ${(size / 1024).toFixed(0)} KiB`);
     await screenshots(many.page, [many.at(0.5)], "many");
+    // A figure, not a check (no timed assertion): the time to draw one
+    // frame (chart, timeline, charts) with 101 vessels, over 200 slider moves.
+    const frameMs = await many.page.evaluate(() => {
+      const slider = document.getElementById("slider");
+      const start = performance.now();
+      for (let k = 0; k < 200; k++) {
+        slider.value = (k * 7.3) % Number(slider.max);
+        slider.dispatchEvent(new Event("input"));
+      }
+      return (performance.now() - start) / 200;
+    });
+    console.log(`  100 targets: ${frameMs.toFixed(1)} ms per frame`);
   } finally {
     await browser.close();
     fs.rmSync(userData, { recursive: true, force: true });
