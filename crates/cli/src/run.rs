@@ -67,11 +67,11 @@ pub(crate) fn run_scenario(scenario: &Scenario, seed: u64) -> Result<Run, CliErr
 /// The files [`write_outputs`] writes into its folder.
 pub(crate) const OUTPUT_FILES: [&str; 6] = [
     "report.json",
-    crate::replay::REPLAY_HTML,
     "trajectories.svg",
     "trajectories.png",
     "distance.svg",
     "distance.png",
+    crate::replay::REPLAY_HTML,
 ];
 
 /// Writes `report.json`, the four plots, the trajectory exports

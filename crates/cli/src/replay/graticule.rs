@@ -33,6 +33,9 @@ pub(crate) struct GraticuleLine {
     pub(crate) kind: String,
     /// Its latitude or longitude, degrees.
     pub(crate) value_deg: f64,
+    /// The spacing of its grid, degrees: the coarse grid's lines, or the
+    /// finer grid's (drawn when zoomed in) between them.
+    pub(crate) step_deg: f64,
     /// Its label, degrees and minutes with the hemisphere (`50°12.0'N`).
     pub(crate) label: String,
     /// Points along it, `[east_m, north_m]` in the local frame.
@@ -56,6 +59,16 @@ fn step_for(span_deg: f64) -> f64 {
         .copied()
         .find(|step| span_deg / step <= MAX_LINES)
         .unwrap_or(STEPS_DEG[STEPS_DEG.len() - 1])
+}
+
+/// The finer spacing under `coarse`: the largest of [`STEPS_DEG`] at most
+/// a quarter of it (`None` under 1').
+fn finer(coarse: f64) -> Option<f64> {
+    STEPS_DEG
+        .iter()
+        .copied()
+        .rev()
+        .find(|step| *step <= coarse / 4.0 + 1e-12)
 }
 
 /// Multiples of `step` from below `low` to above `high`.
@@ -103,25 +116,45 @@ pub(crate) fn graticule(frame: &LocalFrame, low: DVec2, high: DVec2) -> Vec<Grat
     };
     let round = |p: DVec2| [(p.x * 10.0).round() / 10.0, (p.y * 10.0).round() / 10.0];
     let mut lines = Vec::new();
-    for lat_deg in multiples(lat_low, lat_high, lat_step) {
+    let mut add = |kind: &str, value_deg: f64, step_deg: f64| {
+        let points_m = if kind == "lat" {
+            along(lon_low, lon_high)
+                .map(|lon_deg| round(frame.to_local_m(value_deg, lon_deg)))
+                .collect()
+        } else {
+            along(lat_low, lat_high)
+                .map(|lat_deg| round(frame.to_local_m(lat_deg, value_deg)))
+                .collect()
+        };
+        let label = if kind == "lat" {
+            label(value_deg, 'N', 'S')
+        } else {
+            label(value_deg, 'E', 'W')
+        };
         lines.push(GraticuleLine {
-            kind: "lat".to_owned(),
-            value_deg: lat_deg,
-            label: label(lat_deg, 'N', 'S'),
-            points_m: along(lon_low, lon_high)
-                .map(|lon_deg| round(frame.to_local_m(lat_deg, lon_deg)))
-                .collect(),
+            kind: kind.to_owned(),
+            value_deg,
+            step_deg,
+            label,
+            points_m,
         });
-    }
-    for lon_deg in multiples(lon_low, lon_high, lon_step) {
-        lines.push(GraticuleLine {
-            kind: "lon".to_owned(),
-            value_deg: lon_deg,
-            label: label(lon_deg, 'E', 'W'),
-            points_m: along(lat_low, lat_high)
-                .map(|lat_deg| round(frame.to_local_m(lat_deg, lon_deg)))
-                .collect(),
-        });
+    };
+    for (kind, low, high, step) in [
+        ("lat", lat_low, lat_high, lat_step),
+        ("lon", lon_low, lon_high, lon_step),
+    ] {
+        for value in multiples(low, high, step) {
+            add(kind, value, step);
+        }
+        // The finer grid's lines between the coarse ones.
+        if let Some(fine) = finer(step) {
+            for value in multiples(low, high, fine) {
+                let on_coarse = ((value / step) - (value / step).round()).abs() < 1e-6;
+                if !on_coarse {
+                    add(kind, value, fine);
+                }
+            }
+        }
     }
     lines
 }
@@ -142,11 +175,21 @@ mod tests {
         let frame = LocalFrame::new(50.0, -1.0);
         let lines = graticule(
             &frame,
-            DVec2::new(-5_000.0, -5_000.0),
-            DVec2::new(5_000.0, 5_000.0),
+            DVec2::new(-15_000.0, -15_000.0),
+            DVec2::new(15_000.0, 15_000.0),
         );
-        let parallels: Vec<&GraticuleLine> = lines.iter().filter(|l| l.kind == "lat").collect();
-        let meridians: Vec<&GraticuleLine> = lines.iter().filter(|l| l.kind == "lon").collect();
+        let coarse_deg = 5.0 / 60.0;
+        let coarse = |line: &&GraticuleLine| (line.step_deg - coarse_deg).abs() < 1e-12;
+        let parallels: Vec<&GraticuleLine> = lines
+            .iter()
+            .filter(|l| l.kind == "lat")
+            .filter(coarse)
+            .collect();
+        let meridians: Vec<&GraticuleLine> = lines
+            .iter()
+            .filter(|l| l.kind == "lon")
+            .filter(coarse)
+            .collect();
         assert!(parallels.len() >= 3 && meridians.len() >= 3, "{lines:?}");
         let origin = parallels
             .iter()
@@ -158,5 +201,25 @@ mod tests {
             let (lat_deg, _) = frame.to_lat_lon_deg(DVec2::new(point[0], point[1]));
             assert!((lat_deg - 50.0).abs() < 1e-5, "{point:?} at {lat_deg}");
         }
+        // The finer grid (1') lies between the coarse lines, never on one.
+        let fine: Vec<&GraticuleLine> = lines
+            .iter()
+            .filter(|l| (l.step_deg - 1.0 / 60.0).abs() < 1e-12)
+            .collect();
+        assert!(fine.len() >= 4 * parallels.len());
+        for line in fine {
+            let on_coarse = lines
+                .iter()
+                .filter(coarse)
+                .any(|c| c.kind == line.kind && (c.value_deg - line.value_deg).abs() < 1e-9);
+            assert!(!on_coarse, "{}", line.label);
+        }
+    }
+
+    #[test]
+    fn the_finer_grid_is_a_quarter_or_less_of_the_coarse() {
+        assert_eq!(finer(5.0 / 60.0), Some(1.0 / 60.0));
+        assert_eq!(finer(1.0), Some(15.0 / 60.0));
+        assert_eq!(finer(1.0 / 60.0), None);
     }
 }

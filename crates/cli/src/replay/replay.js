@@ -130,7 +130,15 @@
     ctx.strokeStyle = "#dde6ee"; ctx.fillStyle = "#6b7b88"; ctx.lineWidth = 1;
     ctx.font = "11px sans-serif";
     if (data.geo) {
+      const maxStep = { lat: 0, lon: 0 };
+      for (const line of data.geo.graticule) maxStep[line.kind] = Math.max(maxStep[line.kind], line.step_deg);
       for (const line of data.geo.graticule) {
+        // A finer grid's line only when its lines are 70 px apart or more
+        // (a minute of latitude is 1852 m; of longitude, less).
+        const spacing_px = line.step_deg * 60 * NM * view.s * (line.kind === "lon" ? Math.cos(data.geo.origin_lat_deg * Math.PI / 180) : 1);
+        const coarsest = line.step_deg >= maxStep[line.kind];
+        if (!coarsest && spacing_px < 70) continue;
+        ctx.strokeStyle = coarsest ? "#d3dee8" : "#e6edf3";
         ctx.beginPath();
         line.points_m.forEach(function (p, k) {
           if (k === 0) ctx.moveTo(sx(p[0]), sy(p[1])); else ctx.lineTo(sx(p[0]), sy(p[1]));
