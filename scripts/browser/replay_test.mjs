@@ -134,8 +134,9 @@ async function checkFindings(page, report, label) {
   if (timed) {
     await page.locator(`#findings li.finding[data-name="${timed.name}"]`).first().click();
     const state = await page.evaluate(() => window.vorrtReplay.state());
-    check(Math.abs(state.time_s - Number(timed.time)) < 1e-6,
-      `${label}: clicking finding ${timed.vessel}/${timed.name} moves to ${Number(timed.time)} s (now ${state.time_s} s)`);
+    const slider = Number(await page.locator("#slider").inputValue());
+    check(Math.abs(state.time_s - Number(timed.time)) < 1e-6 && Math.abs(slider - Number(timed.time)) <= 0.05,
+      `${label}: clicking finding ${timed.vessel}/${timed.name} moves to ${Number(timed.time)} s (now ${state.time_s} s, slider ${slider})`);
   }
 }
 
