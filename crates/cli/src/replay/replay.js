@@ -416,18 +416,19 @@
     const ctx = canvas.getContext("2d"); ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.fillStyle = "#fff"; ctx.fillRect(0, 0, w, h);
     timeAxis(ctx, w, 0, h, true);
-    const rows = [["findings", 10], ["risk / CPA", 28], ["plans", 46]];
+    const rows = [["findings", 10], ["risk / CPA", 28], ["plans", 57]];
     ctx.fillStyle = "#333"; ctx.font = "11px sans-serif";
     for (const [name, y] of rows) ctx.fillText(name, 4, y + 4);
     timelineMarks = [];
     for (const p of data.plans) {
       const x = tx(p.time_s, w);
       ctx.strokeStyle = p.succeeded ? "#2a8a2a" : "#e07b00"; ctx.lineWidth = 2;
-      ctx.beginPath(); ctx.moveTo(x, 40); ctx.lineTo(x, 52); ctx.stroke();
-      timelineMarks.push({ x: x, y: 46, time_s: p.time_s, vessel: -1,
+      ctx.beginPath(); ctx.moveTo(x, 51); ctx.lineTo(x, 63); ctx.stroke();
+      timelineMarks.push({ x: x, y: 57, time_s: p.time_s, vessel: -1,
         text: minutes(p.time_s) + ": planner call (" + p.trigger + ")" + (p.succeeded ? "" : ", no plan") });
     }
     let labelEnd = -Infinity;
+    const labels = [];
     ctx.font = "10px sans-serif";
     for (const v of targets) {
       const e = v.encounter;
@@ -445,13 +446,15 @@
           return u !== v && u.encounter && u.encounter.risk_time_s !== null && Math.abs(tx(u.encounter.risk_time_s, w) - x) < 3;
         }).map(function (u) { return u.name + " " + ENCOUNTER_SHORT[u.encounter.encounter]; });
         const text = [label].concat(together.slice(0, 3)).join("; ") + (together.length > 3 ? "; +" + (together.length - 3) : "");
-        ctx.fillText(text, x + 7, 32); labelEnd = x + 7 + ctx.measureText(text).width + 6;
+        labels.push([text, x + 7, v.colour]); labelEnd = x + 7 + ctx.measureText(text).width + 6;
       }
       const x2 = tx(e.time_of_min_s, w);
       ctx.lineWidth = 2; ctx.beginPath(); ctx.moveTo(x2, 22); ctx.lineTo(x2, 34); ctx.stroke();
       timelineMarks.push({ x: x2, y: 28, time_s: e.time_of_min_s, vessel: v.index,
         text: minutes(e.time_of_min_s) + ": closest approach of " + v.name + ", " + Math.round(e.min_distance_m) + " m" });
     }
+    // The classifications on a line of their own under the marks.
+    for (const [text, x, colour] of labels) { ctx.fillStyle = colour; ctx.fillText(text, x - 9, 45); }
     data.findings.forEach(function (f) {
       if (f.time_s === null) return;
       const x = tx(f.time_s, w);
