@@ -24,7 +24,9 @@ pub use generator::{
     TssSpec,
 };
 pub use geo::{LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions};
-pub use io::{SCENARIO_EXTENSION, bundled_fixtures_dir, load_dir};
+pub use io::{
+    JSON_SCENARIO_EXTENSION, SCENARIO_EXTENSION, ScenarioFormat, bundled_fixtures_dir, load_dir,
+};
 pub use planner_settings::PlannerSettings;
 pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
