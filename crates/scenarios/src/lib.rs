@@ -33,9 +33,9 @@ pub use scenario::{
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
 pub use simulation::{
-    ClosedLoop, Decision, LoopState, PlanCheck, PlanEvent, PlanTrigger, RecordedMotion,
-    RecordedMotionError, RunStatus, SimulationRecord, StepOutcome, TargetMotion, TimedState,
-    simulate, simulate_with,
+    COMMANDED_GOAL_TOLERANCE_M, ClosedLoop, CommandError, CommandedRun, Decision, LoopState,
+    PlanCheck, PlanEvent, PlanTrigger, RecordedMotion, RecordedMotionError, RunStatus,
+    SimulationRecord, StepOutcome, TargetMotion, TimedState, simulate, simulate_with,
 };
 pub use validate::{MAX_EXTENT_NM, MAX_LENGTH_M, MAX_SIMULATION_STEPS, MAX_SPEED_KN, MAX_TARGETS};
 

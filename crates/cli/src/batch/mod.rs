@@ -115,7 +115,7 @@ pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
 }
 
 /// The scenarios of a batch or of `generate`, refused when there are none.
-fn items_of(
+pub(crate) fn items_of(
     args: &GeneratorArgs,
     kind: Option<Kind>,
     dir: Option<&Path>,
