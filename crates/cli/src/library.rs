@@ -16,8 +16,7 @@ use vorrt_scenarios::{Scenario, SimulationRecord};
 /// what it prints goes to this process's standard output and error.
 #[must_use]
 pub fn run_command_line(args: Vec<OsString>) -> u8 {
-    let argv = std::iter::once(OsString::from("vorrt")).chain(args);
-    crate::run_parsed(argv)
+    crate::run_parsed(std::iter::once(OsString::from("vorrt")).chain(args))
 }
 
 /// `trajectory.csv` of a run, byte for byte as `vorrt simulate` writes it.
@@ -34,7 +33,7 @@ pub struct JudgeOptions {
     /// Ownship's name among the tracks (`--ownship`); `None`: the
     /// scenario's ownship, else the vessel marked as ownship, else the first.
     pub ownship: Option<String>,
-    /// The clearance d_th, metres (`--d-th`); `None`: the scenario's, else 200.
+    /// The clearance `d_th`, metres (`--d-th`); `None`: the scenario's, else 200.
     pub d_th_m: Option<f64>,
     /// Resampling step, seconds (`--step-s`); `None`: keep shared stamps.
     pub step_s: Option<f64>,
@@ -87,7 +86,7 @@ pub fn judge_csv(
         default_length_m: options.length_m,
         max_turn_rate_deg_s: options.max_turn_rate_deg_s,
     };
-    let (_, _, judgement) = judge::judge_text(text, TracksFormat::Csv, scenario, options)
+    let (_, _, judgement) = judge::judge_text(text, TracksFormat::Csv, scenario, &options)
         .map_err(|error| error.to_string())?;
     serde_json::to_string_pretty(&judgement)
         .map_err(|error| format!("cannot write the judgement as JSON: {error}"))

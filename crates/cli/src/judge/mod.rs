@@ -137,7 +137,7 @@ pub(crate) fn judge_text(
     text: &str,
     format: TracksFormat,
     scenario: Option<vorrt_scenarios::Scenario>,
-    options: build::Options,
+    options: &build::Options,
 ) -> Result<
     (
         build::Rebuilt,
@@ -152,7 +152,7 @@ pub(crate) fn judge_text(
         TracksFormat::Geojson => formats::read_geojson(file, text)?,
         TracksFormat::Ais => formats::read_ais(file, text)?,
     };
-    let rebuilt = build::rebuild(tracks, scenario, &options)?;
+    let rebuilt = build::rebuild(tracks, scenario, options)?;
     let evaluation = vorrt_scenarios::evaluate(&rebuilt.scenario, &rebuilt.record);
     let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
     // No planner ran (an empty sum of times is -0).
@@ -196,7 +196,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         default_length_m: args.length_m,
         max_turn_rate_deg_s: args.max_turn_rate_deg_s,
     };
-    let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, options)?;
+    let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, &options)?;
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out")
             .join("judge")
