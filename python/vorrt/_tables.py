@@ -18,7 +18,11 @@ def table_from_csv(text: str) -> Any:
     except ImportError:
         pandas = None
     if pandas is not None:
-        return pandas.read_csv(io.StringIO(text), float_precision="round_trip")
+        # Numbers read back exactly as written: pandas 3 parses round trip by
+        # default (and deprecates the option), pandas 1-2 only when asked.
+        major = int(pandas.__version__.split(".")[0])
+        options = {} if major >= 3 else {"float_precision": "round_trip"}
+        return pandas.read_csv(io.StringIO(text), **options)
     rows = list(csv.reader(io.StringIO(text)))
     header, body = rows[0], rows[1:]
     columns: Dict[str, List[Any]] = {}

@@ -114,16 +114,22 @@ impl Scenario {
     /// line, the column and the field), [`ScenarioError::Invalid`] when a
     /// value breaks a rule.
     pub fn from_json_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
-        let syntax = |path: String, error: &serde_json::Error| ScenarioError::Syntax {
-            file: source.to_owned(),
-            line: error.line(),
-            column: error.column(),
-            // As in RON: a type error deep in the file names its field.
-            message: if path.is_empty() || path == "." {
-                error.to_string()
-            } else {
-                format!("{path}: {error}")
-            },
+        let syntax = |path: String, error: &serde_json::Error| {
+            // The position is in the message's prefix already.
+            let text = error.to_string();
+            let suffix = format!(" at line {} column {}", error.line(), error.column());
+            let text = text.strip_suffix(&suffix).unwrap_or(&text);
+            ScenarioError::Syntax {
+                file: source.to_owned(),
+                line: error.line(),
+                column: error.column(),
+                // As in RON: a type error deep in the file names its field.
+                message: if path.is_empty() || path == "." {
+                    text.to_owned()
+                } else {
+                    format!("{path}: {text}")
+                },
+            }
         };
         let mut deserializer = serde_json::Deserializer::from_str(text);
         let mut scenario: Scenario = serde_path_to_error::deserialize(&mut deserializer)
