@@ -22,7 +22,9 @@ def table_from_csv(text: str) -> Any:
         # default (and deprecates the option), pandas 1-2 only when asked.
         major = int(pandas.__version__.split(".")[0])
         options = {} if major >= 3 else {"float_precision": "round_trip"}
-        return pandas.read_csv(io.StringIO(text), **options)
+        # A vessel named by its MMSI stays text.
+        dtype = {name: str for name in TEXT_COLUMNS}
+        return pandas.read_csv(io.StringIO(text), dtype=dtype, **options)
     rows = list(csv.reader(io.StringIO(text)))
     header, body = rows[0], rows[1:]
     columns: Dict[str, List[Any]] = {}
