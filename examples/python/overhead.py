@@ -1,6 +1,7 @@
 """The Python overhead of a campaign: the same N runs driven from Python
-(``vorrt.generate`` then ``vorrt.simulate`` per scenario, each report parsed
-into a dict and its trajectory.csv made) and by ``vorrt batch --jobs 1``,
+(``vorrt.generate`` then ``vorrt.simulate`` per scenario, each run's report
+read as a dict: ``report.json`` written and parsed, which the batch does not
+do) and by ``vorrt batch --jobs 1``,
 both on one core, in CPU seconds (the process's own for Python, the
 child's for the CLI), alternating ROUNDS times. docs/performance.md
 records a run.
@@ -28,7 +29,6 @@ def python_campaign(count: int, seed: int, targets: int) -> Tuple[float, float, 
     for scenario in vorrt.generate("open-sea", targets=targets, count=count, seed=seed):
         run = vorrt.simulate(scenario)
         reached += run.report["reached_goal"]
-        run.trajectory_csv()
     return time.process_time() - cpu, time.perf_counter() - wall, reached
 
 

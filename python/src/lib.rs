@@ -19,7 +19,7 @@ use pyo3::types::{PyDict, PyList};
 mod campaign;
 mod commanded;
 use std::path::PathBuf;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 use vorrt_cli::report::{PlanOutput, Report};
 use vorrt_geometry::{angle, units};
 use vorrt_planner::{Planner, VesselState};
@@ -179,40 +179,65 @@ fn seed_for(scenario: &vorrt_scenarios::Scenario, seed: Option<u64>) -> u64 {
     seed.or(scenario.seed).unwrap_or(1)
 }
 
-/// A finished closed-loop run (`vorrt.Run`).
+/// A finished closed-loop run (`vorrt.Run`). Its report's JSON, the dict
+/// and `trajectory.csv` are made when first asked for: a campaign that
+/// reads one field of each run pays for no more (`docs/performance.md`).
 #[pyclass(module = "vorrt", name = "Run", frozen)]
 #[derive(Debug)]
 pub struct PyRun {
-    /// The content of the command line's `report.json`, as a dict.
-    #[pyo3(get)]
-    report: Py<PyAny>,
     /// Whether ownship reached its goal.
     #[pyo3(get)]
     reached_goal: bool,
-    report_json: String,
-    trajectory_csv: String,
+    scenario: vorrt_scenarios::Scenario,
+    record: SimulationRecord,
+    report: Report,
+    report_json: OnceLock<String>,
+    report_dict: OnceLock<Py<PyAny>>,
+}
+
+impl PyRun {
+    fn json(&self) -> PyResult<&str> {
+        if let Some(text) = self.report_json.get() {
+            return Ok(text);
+        }
+        let text = to_json(&self.report)?;
+        Ok(self.report_json.get_or_init(|| text))
+    }
 }
 
 #[pymethods]
 impl PyRun {
     /// `report.json` as the command line writes it (pretty JSON, no final
     /// line end).
-    fn report_json(&self) -> &str {
-        &self.report_json
+    fn report_json(&self) -> PyResult<&str> {
+        self.json()
+    }
+
+    /// The content of the command line's `report.json`, as a dict (the
+    /// same dict on every access).
+    #[getter]
+    fn report(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        if let Some(dict) = self.report_dict.get() {
+            return Ok(dict.clone_ref(py));
+        }
+        let dict = json_loads(py, self.json()?)?;
+        Ok(self.report_dict.get_or_init(|| dict).clone_ref(py))
     }
 
     /// `trajectory.csv` as `vorrt simulate` writes it, byte for byte.
-    fn trajectory_csv(&self) -> &str {
-        &self.trajectory_csv
+    fn trajectory_csv(&self, py: Python<'_>) -> PyResult<String> {
+        py.detach(|| vorrt_cli::library::trajectory_csv(&self.scenario, &self.record))
+            .map_err(PyRuntimeError::new_err)
     }
 
     /// The columns of `trajectory.csv`: a pandas `DataFrame`, or a dict of
     /// numpy arrays without pandas (built on each access).
     #[getter]
     fn tracks(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let text = self.trajectory_csv(py)?;
         Ok(py
             .import("vorrt._tables")?
-            .call_method1("table_from_csv", (&self.trajectory_csv,))?
+            .call_method1("table_from_csv", (text,))?
             .unbind())
     }
 
@@ -221,9 +246,10 @@ impl PyRun {
     /// `finding`.
     #[getter]
     fn findings(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let report = self.report(py)?;
         Ok(py
             .import("vorrt._tables")?
-            .call_method1("findings", (&self.report,))?
+            .call_method1("findings", (report,))?
             .unbind())
     }
 
@@ -232,29 +258,28 @@ impl PyRun {
     }
 }
 
-fn course_deg(state: &VesselState) -> f64 {
-    angle::normalize_2pi(state.course_rad).to_degrees()
-}
-
-/// The run of `record`: evaluated, reported as `report.json`, with its tracks.
+/// The run of `record`: evaluated and reported as `report.json` says.
 fn finished_run(
     py: Python<'_>,
     scenario: &vorrt_scenarios::Scenario,
-    record: &SimulationRecord,
-) -> PyResult<PyRun> {
-    let (report_json, trajectory_csv) = py.detach(|| {
-        let evaluation = evaluate(scenario, record);
-        let report = to_json(&Report::new(scenario, record, &evaluation))?;
-        let csv = vorrt_cli::library::trajectory_csv(scenario, record)
-            .map_err(PyRuntimeError::new_err)?;
-        Ok::<_, PyErr>((report, csv))
-    })?;
-    Ok(PyRun {
-        report: json_loads(py, &report_json)?,
+    record: SimulationRecord,
+) -> PyRun {
+    let report = py.detach(|| {
+        let evaluation = evaluate(scenario, &record);
+        Report::new(scenario, &record, &evaluation)
+    });
+    PyRun {
         reached_goal: record.reached_goal,
-        report_json,
-        trajectory_csv,
-    })
+        scenario: scenario.clone(),
+        record,
+        report,
+        report_json: OnceLock::new(),
+        report_dict: OnceLock::new(),
+    }
+}
+
+fn course_deg(state: &VesselState) -> f64 {
+    angle::normalize_2pi(state.course_rad).to_degrees()
 }
 
 /// Simulates `scenario` in closed loop with planner seed `seed` (the
@@ -267,7 +292,7 @@ fn simulate(py: Python<'_>, scenario: &PyScenario, seed: Option<u64>) -> PyResul
     let record = py
         .detach(|| vorrt_scenarios::simulate(scenario, seed))
         .map_err(|error| scenario_error(&error))?;
-    finished_run(py, scenario, &record)
+    Ok(finished_run(py, scenario, record))
 }
 
 /// The plan of `vorrt plan FILE --seed SEED` as JSON text, exactly as the
@@ -423,7 +448,7 @@ impl PyClosedLoop {
             .take()
             .ok_or_else(|| PyRuntimeError::new_err("the closed loop has been finished"))?;
         let record = run.finish();
-        finished_run(py, &self.scenario, &record)
+        Ok(finished_run(py, &self.scenario, record))
     }
 }
 
