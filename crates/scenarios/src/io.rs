@@ -335,6 +335,20 @@ mod tests {
     }
 
     #[test]
+    fn detect_goes_by_extension_then_content() {
+        let detect = |path: &str, text: &str| ScenarioFormat::detect(Path::new(path), text);
+        assert_eq!(detect("a.JSON", "Scenario("), (ScenarioFormat::Json, false));
+        assert_eq!(detect("a.ron", "{"), (ScenarioFormat::Ron, false));
+        assert_eq!(
+            detect("a.txt", "  {\"name\": 1}"),
+            (ScenarioFormat::Json, true)
+        );
+        assert_eq!(detect("a", "Scenario("), (ScenarioFormat::Ron, true));
+        assert_eq!(ScenarioFormat::Json.name(), "JSON");
+        assert_eq!(ScenarioFormat::Ron.name(), "RON");
+    }
+
+    #[test]
     fn load_picks_the_format_and_says_which_failed() {
         let dir = std::env::temp_dir().join(format!("vorrt-io-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("temp dir");

@@ -259,6 +259,14 @@ mod tests {
         }
         assert_eq!(run.status(), RunStatus::ReachedGoal);
         assert!(steps > 10);
+        #[expect(clippy::cast_precision_loss, reason = "a step count")]
+        let end_s = steps as f64 * scenario.simulation.time_step_s;
+        assert!((run.time_s() - end_s).abs() < 1e-9);
+        assert_eq!(run.targets().len(), scenario.targets.len());
+        assert_eq!(
+            run.targets()[0],
+            *run.record().targets[0].last().expect("recorded")
+        );
         assert_eq!(run.record().times_s.len(), steps + 1);
         assert_eq!(run.step(0.0, 1.0), Err(CommandError::Finished));
         // Straight at a head-on target: the one evaluation finds it.
