@@ -1,11 +1,11 @@
 """The Gymnasium environment vorrt.gym: Gymnasium's own checker, seeding,
 the reward terms, and vorrt's planner as a policy."""
 
-import numpy as np
 import pytest
 from conftest import CROSSING, require
 
 gymnasium = require("gymnasium")
+np = require("numpy")
 from gymnasium.utils.env_checker import check_env  # noqa: E402
 
 import vorrt  # noqa: E402
