@@ -140,7 +140,7 @@ pub(crate) fn items_of(
     if items.is_empty() {
         let what = match dir {
             Some(dir) if kind.is_none() => {
-                format!("{} holds no scenario files (*.ron)", dir.display())
+                format!("{} holds no scenario files (*.ron, *.json)", dir.display())
             }
             _ => format!("--count {} makes no scenario", args.count),
         };
