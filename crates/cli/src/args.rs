@@ -39,7 +39,8 @@ pub(crate) enum Command {
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
     /// against d_th, path and time overhead, planner calls and time) and writes
-    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
+    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png,
+    /// DIR/speed.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
     /// DIR/trajectory.geojson and DIR/trajectory.gpx. Exits 0 when the run
     /// reached its goal safely and obeyed COLREGs, 1 when it did not (a

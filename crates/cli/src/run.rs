@@ -64,16 +64,19 @@ pub(crate) fn run_scenario(scenario: &Scenario, seed: u64) -> Result<Run, CliErr
     })
 }
 
-/// The files [`write_outputs`] writes into its folder.
-pub(crate) const OUTPUT_FILES: [&str; 5] = [
+/// The files [`write_outputs`] writes into its folder: the report and the
+/// plots ([`plot::PLOT_FILES`]).
+pub(crate) const OUTPUT_FILES: [&str; 7] = [
     "report.json",
-    "trajectories.svg",
-    "trajectories.png",
-    "distance.svg",
-    "distance.png",
+    plot::PLOT_FILES[0],
+    plot::PLOT_FILES[1],
+    plot::PLOT_FILES[2],
+    plot::PLOT_FILES[3],
+    plot::PLOT_FILES[4],
+    plot::PLOT_FILES[5],
 ];
 
-/// Writes `report.json`, the four plots and the trajectory exports
+/// Writes `report.json`, the plots and the trajectory exports
 /// ([`crate::export::write_trajectories`]) of `run` into `dir` (created if needed).
 ///
 /// # Errors

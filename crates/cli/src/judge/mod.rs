@@ -194,7 +194,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         .map_err(CliError::Output)?;
     console::print(&output::table(&judgement));
     console::line(&format!(
-        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png}}",
+        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,speed.svg,speed.png}}",
         dir.display()
     ));
     Ok(if judgement.safe_and_compliant {
