@@ -95,7 +95,7 @@ pub(super) fn draw_legend<DB: DrawingBackend>(
 /// every target in order when all fit; else the targets with the closest
 /// approaches (in order of distance) in all but the last line, which says
 /// how many are left out and how close the closest of them came.
-fn listed<'d, 'a>(
+pub(super) fn listed<'d, 'a>(
     data: &'d PlotData<'a>,
     room: usize,
 ) -> (Vec<&'d Track<'a>>, Option<(usize, f64)>) {

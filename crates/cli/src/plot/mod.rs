@@ -25,6 +25,8 @@ mod distance;
 mod labels;
 mod legend;
 mod palette;
+#[cfg(test)]
+mod render_tests;
 mod speed;
 mod trajectories;
 
