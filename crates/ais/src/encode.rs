@@ -453,31 +453,39 @@ mod tests {
     use super::*;
     use crate::read_log;
 
+    /// gpsd's AIVDM documentation decodes this type 1 sentence; ours for
+    /// the same fix reads back to the same values, and matches it bit for
+    /// bit where the two agree on what they say (not status, rate of turn,
+    /// manoeuvre, RAIM or radio).
     #[test]
     fn position_report_matches_a_known_sentence() {
-        // gpsd's AIVDM documentation, type 1: MMSI 477553000, status 5, SOG 0,
-        // 47.58283 N 122.34583 W, COG 51, heading 181, second 15. Only the
-        // fields this encoder writes differently (status, ROT, radio) aside,
-        // the reader decodes ours to the same values.
+        let known = read_log("!AIVDM,1,1,,B,177KQJ5000G?tO`K>RA1wUbN0TKH,0*5C");
+        assert_eq!(known.counts.messages, 1, "{:?}", known.counts);
+        let reference = known.vessels[&477_553_000].reports[0];
         let fix = PositionFix {
             mmsi: 477_553_000,
-            lat_deg: 47.582_833,
-            lon_deg: -122.345_833,
-            course_deg: Some(51.0),
-            speed_kn: Some(0.0),
-            heading_deg: Some(181.0),
+            // The sentence's own integers (1/10000 minute): the reader's
+            // f32 would round the last unit.
+            lat_deg: 28_549_700.0 / 600_000.0,
+            lon_deg: -73_407_500.0 / 600_000.0,
+            course_deg: reference.course_deg,
+            speed_kn: reference.speed_kn,
+            heading_deg: reference.heading_deg,
             utc_second: Some(15),
         };
         let (payload, fill) = position_report_payload(&fix);
         assert_eq!((payload.len(), fill), (28, 0));
         let log = read_log(&sentences(&payload, fill, false, 0).join("\n"));
-        assert_eq!(log.counts.messages, 1, "{:?}", log.counts);
         let report = log.vessels[&477_553_000].reports[0];
-        assert!((report.lat_deg - 47.582_833).abs() < 1e-5);
-        assert!((report.lon_deg + 122.345_833).abs() < 1e-5);
+        assert!((report.lat_deg - 47.582_833).abs() < 1e-5, "{report:?}");
+        assert!((report.lon_deg + 122.345_833).abs() < 1e-5, "{report:?}");
         assert_eq!(report.course_deg, Some(51.0));
         assert_eq!(report.heading_deg, Some(181.0));
         assert_eq!(report.speed_kn, Some(0.0));
+        // Type, repeat and MMSI (the first 38 bits: 6 characters and 2 bits).
+        assert_eq!(&payload[..6], "177KQJ");
+        // Speed to heading and second (bits 50-142): characters 9-22 whole.
+        assert_eq!(&payload[9..23], "0G?tO`K>RA1wUb");
     }
 
     #[test]
