@@ -39,7 +39,8 @@ pub(crate) enum Command {
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
     /// against d_th, path and time overhead, planner calls and time) and writes
-    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
+    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png,
+    /// DIR/speed.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
     /// DIR/trajectory.geojson and DIR/trajectory.gpx. Exits 0 when the run
     /// reached its goal safely and obeyed COLREGs, 1 when it did not (a
@@ -58,6 +59,15 @@ pub(crate) enum Command {
         /// Output folder [default: out/<scenario name>].
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        /// Also write DIR/run.nmea: the run as AIS (ownship as !AIVDO, targets
+        /// as !AIVDM; message types 1 and 5; NMEA 4.10 tag-block times) for a
+        /// chart plotter's replay. A local scenario needs --ais-origin.
+        #[arg(long)]
+        ais: bool,
+        /// Where --ais puts a local scenario's origin (0, 0): LAT,LON in
+        /// degrees (e.g. 50.3,-1.0). A geographic scenario has its own.
+        #[arg(long, value_name = "LAT,LON", requires = "ais")]
+        ais_origin: Option<String>,
     },
     /// Plan once from the start state and print the plan as JSON.
     ///

@@ -20,7 +20,17 @@ pub(crate) fn run(cli: Cli) -> Result<ExitStatus, CliError> {
             scenario,
             seed,
             out,
-        } => simulate_command(&scenario, seed, out.as_deref()),
+            ais,
+            ais_origin,
+        } => simulate_command(
+            &scenario,
+            seed,
+            out.as_deref(),
+            &AisOut {
+                write: ais,
+                origin: ais_origin,
+            },
+        ),
         Command::Plan {
             scenario,
             seed,
@@ -84,13 +94,27 @@ pub(crate) fn summary_table(report: &Report) -> String {
     text
 }
 
+/// What `simulate --ais` asks for.
+struct AisOut {
+    /// Whether to write `run.nmea` (`--ais`).
+    write: bool,
+    /// `--ais-origin`, as given.
+    origin: Option<String>,
+}
+
 fn simulate_command(
     path: &Path,
     seed: Option<u64>,
     out: Option<&Path>,
+    ais: &AisOut,
 ) -> Result<ExitStatus, CliError> {
     let scenario = load(path)?;
     let seed = seed_for(&scenario, seed);
+    // Before the run, so that a missing --ais-origin costs no simulation.
+    let ais_frame = ais
+        .write
+        .then(|| crate::export::ais_frame(&scenario, ais.origin.as_deref()))
+        .transpose()?;
     let dir = out.map_or_else(
         || PathBuf::from("out").join(folder_name(&scenario.name)),
         Path::to_path_buf,
@@ -99,14 +123,20 @@ fn simulate_command(
         let _ticker = Ticker::start(format!("simulating {}", scenario.source));
         let run = run_scenario(&scenario, seed)?;
         write_outputs(&scenario, &run, &dir)?;
+        if let Some(frame) = &ais_frame {
+            crate::export::write_ais(&scenario, &run.record, frame, &dir)?;
+        }
         run
     };
     console::print(&summary_table(&run.report));
-    let exports = if scenario.is_geographic() {
-        ",trajectory.csv,trajectory.geojson,trajectory.gpx"
+    let mut exports = if scenario.is_geographic() {
+        ",trajectory.csv,trajectory.geojson,trajectory.gpx".to_owned()
     } else {
-        ",trajectory.csv"
+        ",trajectory.csv".to_owned()
     };
+    if ais_frame.is_some() {
+        exports = format!("{exports},{}", crate::export::RUN_NMEA);
+    }
     console::line(&format!(
         "\nwrote {}/{{{}{exports}}}",
         dir.display(),

@@ -208,7 +208,7 @@ fn assert_report_field_names(text: &str) {
 
 /// The SVG and PNG plots in `out` are whole, titled and not empty.
 fn assert_plots_written(out: &Path) {
-    for name in ["trajectories.svg", "distance.svg"] {
+    for name in ["trajectories.svg", "distance.svg", "speed.svg"] {
         let svg = std::fs::read_to_string(out.join(name)).unwrap();
         assert!(
             svg.trim_start().starts_with("<svg"),
@@ -221,7 +221,7 @@ fn assert_plots_written(out: &Path) {
         assert!(svg.contains("<text"), "{name} has no text");
         assert!(svg.contains("crossing"), "{name} lacks its title");
     }
-    for name in ["trajectories.png", "distance.png"] {
+    for name in ["trajectories.png", "distance.png", "speed.png"] {
         let png = std::fs::read(out.join(name)).unwrap();
         assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{name} is not a PNG");
         assert!(

@@ -226,7 +226,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
     )?;
     console::print(&output::table(&judgement));
     console::line(&format!(
-        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,replay.html}}",
+        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,speed.svg,speed.png,replay.html}}",
         dir.display()
     ));
     Ok(if judgement.safe_and_compliant {
