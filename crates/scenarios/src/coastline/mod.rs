@@ -320,7 +320,13 @@ pub fn prepare_coast(
         simplify_land_m(&land_m, options.tolerance_m, options.min_area_m2);
     let land_lon_lat_out = map_coords(&simplified_m, |coord| {
         let (lat, lon) = frame.to_lat_lon_deg(crate::DVec2::new(coord.x, coord.y));
-        Coord { x: lon, y: lat }
+        // The round trip through the frame moves a point by micrometres; keep
+        // the edges of the box exactly on it.
+        let bbox = &options.bbox;
+        Coord {
+            x: lon.clamp(bbox.west_deg, bbox.east_deg),
+            y: lat.clamp(bbox.south_deg, bbox.north_deg),
+        }
     })
     .orient(Direction::Default);
     let stats = CoastStats {
