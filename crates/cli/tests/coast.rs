@@ -1,6 +1,6 @@
 //! `vorrt coast` and `vorrt import-ais --coast` end to end, and, when
-//! `VORRT_GSHHS` names a GSHHS L1 shapefile (LGPL, never committed; PyPI
-//! `tracktable-data` ships it), the real full-resolution coastline.
+//! `VORRT_GSHHS` names a `GSHHS` L1 shapefile (LGPL, never committed; `PyPI`
+//! `tracktable-data` ships it), a real high-resolution coastline.
 
 use geo::{
     Contains, Coord, Distance, Euclidean, LineString, MultiPolygon, Point, Polygon, Validation,
@@ -28,7 +28,7 @@ fn text(path: &Path) -> &str {
     path.to_str().expect("a UTF-8 path")
 }
 
-/// The polygons of a GeoJSON FeatureCollection of Polygon features.
+/// The polygons of a `GeoJSON` `FeatureCollection` of Polygon features.
 fn read_polygons(path: &Path) -> MultiPolygon<f64> {
     let value: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();

@@ -3,7 +3,7 @@
 //! Dover lanes in water and crossed at right angles, and the Kent coast
 //! really limiting the starboard alteration.
 //!
-//! The land is read here from the GeoJSON by hand and measured with `geo`,
+//! The land is read here from the `GeoJSON` by hand and measured with `geo`,
 //! independently of the planner's land constraint. The fields `land_geojson`
 //! and `land_clearance_m` are read from the text, and the lanes taken off
 //! before validation, so that this test runs whether or not the scenario
@@ -55,8 +55,11 @@ fn load(name: &str) -> Fixture {
             let line = line.trim();
             !(line.starts_with("land_geojson:") || line.starts_with("land_clearance_m:"))
         })
-        .map(|line| format!("{line}\n"))
-        .collect();
+        .fold(String::new(), |mut text, line| {
+            text.push_str(line);
+            text.push('\n');
+            text
+        });
     // The scenario files' RON dialect: `Option` fields written bare.
     let mut scenario: Scenario = ron::Options::default()
         .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
@@ -75,7 +78,7 @@ fn load(name: &str) -> Fixture {
     }
 }
 
-/// The polygons of a land GeoJSON file as `vorrt coast` writes it.
+/// The polygons of a land `GeoJSON` file as `vorrt coast` writes it.
 fn read_land(path: &Path) -> MultiPolygon<f64> {
     let value: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();

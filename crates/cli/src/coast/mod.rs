@@ -1,5 +1,5 @@
-//! `vorrt coast`: a coastline file (GeoJSON, TopoJSON, ESRI shapefile) into
-//! the small land GeoJSON a scenario's `land_geojson` names: clipped to a
+//! `vorrt coast`: a coastline file (`GeoJSON`, `TopoJSON`, ESRI shapefile) into
+//! the small land `GeoJSON` a scenario's `land_geojson` names: clipped to a
 //! box and simplified in metres (`vorrt_scenarios::coastline`; decision 38).
 
 mod read;
@@ -26,14 +26,14 @@ pub(crate) const LAND_FILE: &str = "land.geojson";
 /// `vorrt coast`.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct CoastArgs {
-    /// The coastline: .geojson/.json (GeoJSON or TopoJSON, e.g. Natural
+    /// The coastline: .geojson/.json (`GeoJSON` or `TopoJSON`, e.g. Natural
     /// Earth's land-10m.json), .topojson, or .shp (ESRI shapefile, e.g. GSHHS
     /// L1).
     pub(crate) input: PathBuf,
     /// The area to keep, degrees: WEST,SOUTH,EAST,NORTH (e.g. 1.0,50.8,2.0,51.3).
     #[arg(long, value_name = "W,S,E,N", allow_hyphen_values = true)]
     pub(crate) bbox: String,
-    /// The land GeoJSON to write.
+    /// The land `GeoJSON` to write.
     #[arg(long, value_name = "LAND.geojson")]
     pub(crate) out: PathBuf,
     /// Simplification tolerance, metres (Douglas-Peucker in a local metric
@@ -44,7 +44,7 @@ pub(crate) struct CoastArgs {
     /// [default: the tolerance squared].
     #[arg(long, value_name = "M2")]
     pub(crate) min_area_m2: Option<f64>,
-    /// The TopoJSON object to read [default: `land` when there is one, else all].
+    /// The `TopoJSON` object to read [default: `land` when there is one, else all].
     #[arg(long, value_name = "NAME")]
     pub(crate) layer: Option<String>,
     /// A provenance and licence line written into the output's `vorrt.note`.
@@ -99,7 +99,7 @@ pub(crate) fn clip_file(
     Ok(coast)
 }
 
-/// Writes `coast` as GeoJSON to `out` (creating its folder) and prints what
+/// Writes `coast` as `GeoJSON` to `out` (creating its folder) and prints what
 /// each stage kept.
 ///
 /// # Errors
@@ -164,6 +164,7 @@ pub(crate) fn write_coast(
 /// # Errors
 /// [`CliError::BadInput`] when the coast cannot be read or the area is
 /// refused; [`CliError::Output`] when the land cannot be written.
+#[expect(clippy::similar_names, reason = "the same margin in two units")]
 pub(crate) fn add_land(
     scenario: &vorrt_scenarios::Scenario,
     ron_text: &str,

@@ -1,4 +1,4 @@
-//! Reading land polygons from GeoJSON, TopoJSON and ESRI shapefiles, in
+//! Reading land polygons from `GeoJSON`, `TopoJSON` and ESRI shapefiles, in
 //! `(longitude, latitude)` degrees.
 
 use crate::error::CliError;
@@ -7,8 +7,8 @@ use std::path::Path;
 use vorrt_scenarios::coastline::BoundingBox;
 
 /// Reads the land polygons of `path`: `.shp` as an ESRI shapefile (its
-/// polygon shapes), `.json` / `.geojson` / `.topojson` as TopoJSON when its
-/// `type` is `Topology`, else GeoJSON. `layer` names the TopoJSON object to
+/// polygon shapes), `.json` / `.geojson` / `.topojson` as `TopoJSON` when its
+/// `type` is `Topology`, else `GeoJSON`. `layer` names the `TopoJSON` object to
 /// read (default: `land` when there is one, else every object). With `bbox`,
 /// shapefile polygons wholly outside it are skipped while reading (a global
 /// coastline is large).
@@ -47,7 +47,7 @@ pub(crate) fn read_land(
     }
 }
 
-/// The polygons of a GeoJSON object (RFC 7946): a FeatureCollection, a
+/// The polygons of a `GeoJSON` object (RFC 7946): a `FeatureCollection`, a
 /// Feature or a bare geometry; features without a geometry are skipped.
 fn read_geojson(value: serde_json::Value) -> Result<MultiPolygon<f64>, String> {
     let geojson: geojson::GeoJson =
@@ -68,7 +68,7 @@ fn read_geojson(value: serde_json::Value) -> Result<MultiPolygon<f64>, String> {
             }
         }
         geojson::GeoJson::Geometry(geometry) => {
-            add_geojson_geometry(&geometry.value, &mut polygons)?
+            add_geojson_geometry(&geometry.value, &mut polygons)?;
         }
     }
     Ok(MultiPolygon::new(polygons))
@@ -117,8 +117,8 @@ fn add_geojson_geometry(
     Ok(())
 }
 
-/// The polygons of a TopoJSON topology's object `layer` (default `land`, or
-/// every object when there is none), arcs decoded as the TopoJSON
+/// The polygons of a `TopoJSON` topology's object `layer` (default `land`, or
+/// every object when there is none), arcs decoded as the `TopoJSON`
 /// specification (sections 2.1.3-2.1.4) says: quantized positions
 /// delta-encoded and scaled by the transform, a negative index `~i` the arc
 /// `i` reversed, and the first position of each following arc of a ring
@@ -310,12 +310,13 @@ fn add_shapefile_polygon(polygon: &shapefile::Polygon, polygons: &mut Vec<Polygo
                 }
                 current = Some((ring(points), Vec::new()));
             }
-            shapefile::PolygonRing::Inner(points) => match &mut current {
-                Some((_, holes)) => holes.push(ring(points)),
-                // A hole before any outer ring has nothing to cut: water in
-                // water, which changes no land.
-                None => {}
-            },
+            // A hole before any outer ring has nothing to cut: water in
+            // water, which changes no land.
+            shapefile::PolygonRing::Inner(points) => {
+                if let Some((_, holes)) = &mut current {
+                    holes.push(ring(points));
+                }
+            }
         }
     }
     if let Some((outer, holes)) = current {
@@ -427,7 +428,7 @@ mod tests {
             point(20.0, 10.0),
         ]));
         {
-            let mut writer = shapefile::ShapeWriter::from_path(&path).unwrap();
+            let writer = shapefile::ShapeWriter::from_path(&path).unwrap();
             writer.write_shapes(&[island, far]).unwrap();
         }
         let land = read_land(&path, None, None).unwrap();

@@ -1,4 +1,4 @@
-//! Writing land as GeoJSON (RFC 7946).
+//! Writing land as `GeoJSON` (RFC 7946).
 
 use ::geo::{LineString, MultiPolygon};
 use serde_json::{Value, json};
@@ -7,7 +7,7 @@ use serde_json::{Value, json};
 /// below any tolerance, and keeps a file small.
 const DECIMALS: i32 = 7;
 
-/// `land_lon_lat` as a GeoJSON FeatureCollection text (RFC 7946): one
+/// `land_lon_lat` as a `GeoJSON` `FeatureCollection` text (RFC 7946): one
 /// `Polygon` feature per polygon, positions `[longitude, latitude]` in
 /// degrees rounded to 1e-7 (about a centimetre), rings as given (give them
 /// counter-clockwise outside and clockwise holes, as

@@ -1,9 +1,9 @@
 //! Coastlines for geographic scenarios: land polygons in longitude and
 //! latitude clipped to a bounding box, simplified to a tolerance in metres
-//! and written as GeoJSON (RFC 7946), the file a scenario's `land_geojson`
+//! and written as `GeoJSON` (RFC 7946), the file a scenario's `land_geojson`
 //! names.
 //!
-//! The readers of coastline files (GeoJSON, TopoJSON, ESRI shapefiles) are
+//! The readers of coastline files (`GeoJSON`, `TopoJSON`, ESRI shapefiles) are
 //! the command line's (`vorrt coast`); this module is the geometry, which
 //! reads nothing: [`prepare_coast`] clips ([`clip_to_bbox`]), projects into
 //! a local metric frame about the box's centre ([`LocalFrame`]), simplifies
@@ -12,12 +12,12 @@
 //! back. Why these choices: `docs/decisions/0038-coastline-sources-and-simplification.md`.
 //!
 //! ```
-//! use geo::{MultiPolygon, polygon};
+//! use geo::{`MultiPolygon`, polygon};
 //! use vorrt_scenarios::coastline::{BoundingBox, CoastOptions, prepare_coast};
 //! // A square island of 0.2 degrees, half of it inside the box.
 //! let island = polygon![(x: 1.0, y: 50.0), (x: 1.2, y: 50.0), (x: 1.2, y: 50.2), (x: 1.0, y: 50.2)];
 //! let bbox = BoundingBox::new(1.1, 49.9, 1.4, 50.3).unwrap();
-//! let coast = prepare_coast(&MultiPolygon::new(vec![island]), &CoastOptions::new(bbox, 50.0)).unwrap();
+//! let coast = prepare_coast(&`MultiPolygon`::new(vec![island]), &CoastOptions::new(bbox, 50.0)).unwrap();
 //! assert_eq!(coast.land_lon_lat.0.len(), 1);
 //! assert_eq!(coast.stats.polygons_out, 1);
 //! ```
@@ -136,7 +136,7 @@ impl BoundingBox {
         })
     }
 
-    /// Parses `WEST,SOUTH,EAST,NORTH` in degrees (the order of GeoJSON's
+    /// Parses `WEST,SOUTH,EAST,NORTH` in degrees (the order of `GeoJSON`'s
     /// `bbox`, RFC 7946 section 5), e.g. `1.0,50.8,2.0,51.3`.
     ///
     /// # Errors

@@ -109,7 +109,6 @@ mod tests {
         (0..count)
             .map(|index| {
                 let angle = std::f64::consts::TAU * f64::from(index) / f64::from(count);
-                #[expect(clippy::cast_precision_loss, reason = "a 32-bit draw in [0, 1)")]
                 let unit = f64::from(rng.next_u32()) / (f64::from(u32::MAX) + 1.0);
                 let radius = radius_m + noise_m * (2.0 * unit - 1.0);
                 (radius * angle.cos(), radius * angle.sin())
