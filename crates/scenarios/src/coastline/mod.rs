@@ -12,12 +12,12 @@
 //! back. Why these choices: `docs/decisions/0038-coastline-sources-and-simplification.md`.
 //!
 //! ```
-//! use geo::{`MultiPolygon`, polygon};
+//! use geo::{MultiPolygon, polygon};
 //! use vorrt_scenarios::coastline::{BoundingBox, CoastOptions, prepare_coast};
 //! // A square island of 0.2 degrees, half of it inside the box.
 //! let island = polygon![(x: 1.0, y: 50.0), (x: 1.2, y: 50.0), (x: 1.2, y: 50.2), (x: 1.0, y: 50.2)];
 //! let bbox = BoundingBox::new(1.1, 49.9, 1.4, 50.3).unwrap();
-//! let coast = prepare_coast(&`MultiPolygon`::new(vec![island]), &CoastOptions::new(bbox, 50.0)).unwrap();
+//! let coast = prepare_coast(&MultiPolygon::new(vec![island]), &CoastOptions::new(bbox, 50.0)).unwrap();
 //! assert_eq!(coast.land_lon_lat.0.len(), 1);
 //! assert_eq!(coast.stats.polygons_out, 1);
 //! ```

@@ -33,7 +33,7 @@ pub struct SimplifyStats {
 ///
 /// Douglas-Peucker alone may make a ring cross itself or a hole cross its
 /// outer ring; a polygon whose result fails `geo`'s OGC validity check is
-/// simplified again at half the tolerance, up to [`MAX_HALVINGS`] times,
+/// simplified again at half the tolerance, up to 8 times (down to 1/256 of it),
 /// then kept as it was. Polygons and holes smaller than `min_area_m2` are
 /// dropped first (a dropped hole becomes land, a dropped islet water: the
 /// limit should stay well below any islet a chart cares about). Polygons that
