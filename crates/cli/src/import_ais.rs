@@ -10,6 +10,10 @@ use vorrt_ais::{DEFAULT_RANGE_NM, ImportOptions, LineCounts, build_scenario, rea
 
 /// `vorrt import-ais`.
 #[derive(Debug, Clone, Args)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap help text, printed verbatim by --help"
+)]
 pub(crate) struct ImportAisArgs {
     /// The AIS log: NMEA 0183 !AIVDM/!AIVDO sentences, optionally behind
     /// NMEA 4.0 tag blocks (\c:UNIXTIME,...*hh\) that give the times.
@@ -30,9 +34,9 @@ pub(crate) struct ImportAisArgs {
     /// Leave out vessels farther than this from ownship, nautical miles.
     #[arg(long, value_name = "R", default_value_t = DEFAULT_RANGE_NM)]
     pub(crate) range_nm: f64,
-    /// A coastline (as `vorrt coast` reads): clipped to the scenario's area
-    /// and written as land.geojson beside the scenario, which names it in
-    /// `land_geojson`.
+    /// A coastline (any file vorrt coast reads): clipped to the scenario's
+    /// area and written as land.geojson beside the scenario, which names it
+    /// in land_geojson.
     #[arg(long, value_name = "FILE")]
     pub(crate) coast: Option<PathBuf>,
     /// The margin kept around the vessels and the goal when clipping

@@ -25,15 +25,19 @@ pub(crate) const LAND_FILE: &str = "land.geojson";
 
 /// `vorrt coast`.
 #[derive(Debug, Clone, Args)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap help text, printed verbatim by --help"
+)]
 pub(crate) struct CoastArgs {
-    /// The coastline: .geojson/.json (`GeoJSON` or `TopoJSON`, e.g. Natural
+    /// The coastline: .geojson/.json (GeoJSON or TopoJSON, e.g. Natural
     /// Earth's land-10m.json), .topojson, or .shp (ESRI shapefile, e.g. GSHHS
     /// L1).
     pub(crate) input: PathBuf,
     /// The area to keep, degrees: WEST,SOUTH,EAST,NORTH (e.g. 1.0,50.8,2.0,51.3).
     #[arg(long, value_name = "W,S,E,N", allow_hyphen_values = true)]
     pub(crate) bbox: String,
-    /// The land `GeoJSON` to write.
+    /// The land GeoJSON to write.
     #[arg(long, value_name = "LAND.geojson")]
     pub(crate) out: PathBuf,
     /// Simplification tolerance, metres (Douglas-Peucker in a local metric
@@ -44,10 +48,10 @@ pub(crate) struct CoastArgs {
     /// [default: the tolerance squared].
     #[arg(long, value_name = "M2")]
     pub(crate) min_area_m2: Option<f64>,
-    /// The `TopoJSON` object to read [default: `land` when there is one, else all].
+    /// The TopoJSON object to read [default: land when there is one, else all].
     #[arg(long, value_name = "NAME")]
     pub(crate) layer: Option<String>,
-    /// A provenance and licence line written into the output's `vorrt.note`.
+    /// A provenance and licence line written into the output's vorrt.note.
     #[arg(long, value_name = "TEXT")]
     pub(crate) note: Option<String>,
 }
