@@ -149,6 +149,52 @@ mod tests {
     }
 
     #[test]
+    fn islands_with_lakes_stay_valid_at_any_tolerance() {
+        // Round islands (radius 1 km +- 30 m) with a lake 150 m from the
+        // shore, simplified at tolerances from 5 m to 320 m: from about
+        // 150 m on, Douglas-Peucker alone cuts the shore across the lake;
+        // the result must always be valid, and within the tolerance of
+        // every original vertex.
+        let mut reduced = 0;
+        for seed in 0..24_u32 {
+            let exterior = noisy_ring(u64::from(seed), 160, 1_000.0, 30.0);
+            let bearing = 0.7 * f64::from(seed);
+            let centre = (700.0 * bearing.cos(), 700.0 * bearing.sin());
+            let lake: LineString<f64> = noisy_ring(u64::from(seed) + 1_000, 24, 150.0, 10.0)
+                .0
+                .iter()
+                .map(|c| (c.x + centre.0, c.y + centre.1))
+                .collect();
+            let island = Polygon::new(exterior, vec![lake]);
+            assert!(island.is_valid(), "seed {seed}");
+            let tolerance_m = 5.0 * f64::from(1 + seed % 8).powi(2);
+            let (land, stats) =
+                simplify_land_m(&MultiPolygon::new(vec![island.clone()]), tolerance_m, 1.0);
+            assert!(
+                land.is_valid(),
+                "seed {seed}: {:?}",
+                land.validation_errors()
+            );
+            reduced += stats.tolerance_reduced;
+            for kept in &land.0 {
+                let worst_m = island
+                    .exterior()
+                    .points()
+                    .map(|point: Point<f64>| Euclidean.distance(&point, kept.exterior()))
+                    .fold(0.0, f64::max);
+                assert!(
+                    worst_m <= tolerance_m + 1e-9,
+                    "seed {seed}: {worst_m} m at {tolerance_m} m"
+                );
+            }
+        }
+        assert!(
+            reduced > 0,
+            "no case needed the finer tolerance: the test tests nothing"
+        );
+    }
+
+    #[test]
     fn a_simplification_that_would_cut_a_hole_is_redone_finer() {
         // Land above y = 0 with a 50 m bump south into the water, and a lake
         // 20 m square inside the bump. At a 60 m tolerance Douglas-Peucker
