@@ -264,7 +264,7 @@ pub(crate) struct BatchArgs {
         required_unless_present = "dir"
     )]
     pub(crate) generate: Option<Kind>,
-    /// Run the scenario files (*.ron) of this folder instead, in file-name
+    /// Run the scenario files (*.ron, *.json) of this folder instead, in file-name
     /// order; each with its own `seed` if it has one.
     #[arg(long, value_name = "FOLDER")]
     pub(crate) dir: Option<PathBuf>,

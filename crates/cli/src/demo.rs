@@ -354,7 +354,7 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
          <th>reached goal</th><th>collision</th><th>min distance (m)</th><th>d_th (m)</th>\
          <th>clearance</th><th>COLREGs</th><th>path overhead</th><th>time overhead</th>\
          <th>plans / replans / failed</th>\
-         <th>planning (s)</th><th>report</th></tr>\n",
+         <th>planning (s)</th><th>report</th><th>replay</th></tr>\n",
     );
     for outcome in outcomes {
         let entry = &outcome.entry;
@@ -371,7 +371,8 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
                      <td class=\"num\">{}</td><td class=\"num\">{:.0}</td>{}{}\
                      <td class=\"num\">{:.1} %</td><td class=\"num\">{:.1} %</td>\
                      <td class=\"num\">{} / {} / {}</td>\
-                     <td class=\"num\">{:.3}</td><td><a href=\"{}\">json</a></td></tr>",
+                     <td class=\"num\">{:.3}</td><td><a href=\"{}\">json</a></td>\
+                     <td><a href=\"{}\">replay</a></td></tr>",
                     escape(&entry.group),
                     report.targets.len(),
                     verdict(report.reached_goal, "yes", "no"),
@@ -388,13 +389,14 @@ fn index_html(outcomes: &[Outcome], fixtures: &str) -> String {
                     report.planning.replans,
                     report.planning.failed_plans,
                     report.planning.total_planning_time_s,
-                    escape(&href(&entry.folder().join("report.json")))
+                    escape(&href(&entry.folder().join("report.json"))),
+                    escape(&href(&entry.folder().join(crate::replay::REPLAY_HTML)))
                 );
             }
             Err(error) => {
                 let _ = writeln!(
                     html,
-                    "<tr><td>{link}</td><td>{}</td><td class=\"bad\" colspan=\"12\">error: {}</td></tr>",
+                    "<tr><td>{link}</td><td>{}</td><td class=\"bad\" colspan=\"13\">error: {}</td></tr>",
                     escape(&entry.group),
                     escape(&error.to_string())
                 );
@@ -454,6 +456,11 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
         );
     }
     html.push_str("</div>\n");
+    let _ = writeln!(
+        html,
+        "<p><a href=\"{}\">Replay the encounter</a> (time slider, tracks, findings on a timeline).</p>",
+        escape(&href(&folder.join(crate::replay::REPLAY_HTML)))
+    );
     let _ = writeln!(
         html,
         "<p>Seed {}; reached goal: <b>{}</b>{}; path {:.0} m vs {:.0} m straight \

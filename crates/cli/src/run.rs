@@ -65,16 +65,18 @@ pub(crate) fn run_scenario(scenario: &Scenario, seed: u64) -> Result<Run, CliErr
 }
 
 /// The files [`write_outputs`] writes into its folder.
-pub(crate) const OUTPUT_FILES: [&str; 5] = [
+pub(crate) const OUTPUT_FILES: [&str; 6] = [
     "report.json",
     "trajectories.svg",
     "trajectories.png",
     "distance.svg",
     "distance.png",
+    crate::replay::REPLAY_HTML,
 ];
 
-/// Writes `report.json`, the four plots and the trajectory exports
-/// ([`crate::export::write_trajectories`]) of `run` into `dir` (created if needed).
+/// Writes `report.json`, the four plots, the trajectory exports
+/// ([`crate::export::write_trajectories`]) and `replay.html`
+/// ([`crate::replay::write_replay`]) of `run` into `dir` (created if needed).
 ///
 /// # Errors
 /// [`CliError::Output`] when a file cannot be written.
@@ -89,6 +91,7 @@ pub(crate) fn write_outputs(scenario: &Scenario, run: &Run, dir: &Path) -> Resul
     })?;
     plot::write_plots(scenario, &run.record, &run.evaluation, dir).map_err(CliError::Output)?;
     crate::export::write_trajectories(scenario, &run.record, &run.report, dir)?;
+    crate::replay::write_replay(scenario, &run.record, &run.evaluation, &run.report, dir)?;
     Ok(())
 }
 

@@ -25,16 +25,18 @@ pub use generator::{
     TssSpec,
 };
 pub use geo::{LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions};
-pub use io::{SCENARIO_EXTENSION, bundled_fixtures_dir, load_dir};
+pub use io::{
+    JSON_SCENARIO_EXTENSION, SCENARIO_EXTENSION, ScenarioFormat, bundled_fixtures_dir, load_dir,
+};
 pub use planner_settings::PlannerSettings;
 pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
 pub use simulation::{
-    ClosedLoop, Decision, LoopState, PlanCheck, PlanEvent, PlanTrigger, RecordedMotion,
-    RecordedMotionError, RunStatus, SimulationRecord, StepOutcome, TargetMotion, TimedState,
-    simulate, simulate_with,
+    COMMANDED_GOAL_TOLERANCE_M, ClosedLoop, CommandError, CommandedRun, Decision, LoopState,
+    PlanCheck, PlanEvent, PlanTrigger, RecordedMotion, RecordedMotionError, RunStatus,
+    SimulationRecord, StepOutcome, TargetMotion, TimedState, simulate, simulate_with,
 };
 pub use validate::{MAX_EXTENT_NM, MAX_LENGTH_M, MAX_SIMULATION_STEPS, MAX_SPEED_KN, MAX_TARGETS};
 

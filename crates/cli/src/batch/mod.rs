@@ -115,7 +115,7 @@ pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
 }
 
 /// The scenarios of a batch or of `generate`, refused when there are none.
-fn items_of(
+pub(crate) fn items_of(
     args: &GeneratorArgs,
     kind: Option<Kind>,
     dir: Option<&Path>,
@@ -140,7 +140,7 @@ fn items_of(
     if items.is_empty() {
         let what = match dir {
             Some(dir) if kind.is_none() => {
-                format!("{} holds no scenario files (*.ron)", dir.display())
+                format!("{} holds no scenario files (*.ron, *.json)", dir.display())
             }
             _ => format!("--count {} makes no scenario", args.count),
         };

@@ -127,6 +127,40 @@ fn positive(name: &str, value: f64) -> Result<f64, CliError> {
     }
 }
 
+/// Reads the tracks in `text` (of `format`), rebuilds the run and judges
+/// it with the one evaluation: what `vorrt judge` and the Python binding's
+/// `vorrt.judge` both do.
+///
+/// # Errors
+/// [`CliError::BadInput`] for invalid tracks or options.
+pub(crate) fn judge_text(
+    text: &str,
+    format: TracksFormat,
+    scenario: Option<vorrt_scenarios::Scenario>,
+    options: &build::Options,
+) -> Result<
+    (
+        build::Rebuilt,
+        vorrt_scenarios::Evaluation,
+        output::Judgement,
+    ),
+    CliError,
+> {
+    let file = options.tracks_file.as_str();
+    let tracks = match format {
+        TracksFormat::Csv => tracks::read_csv(file, text)?,
+        TracksFormat::Geojson => formats::read_geojson(file, text)?,
+        TracksFormat::Ais => formats::read_ais(file, text)?,
+    };
+    let rebuilt = build::rebuild(tracks, scenario, options)?;
+    let evaluation = vorrt_scenarios::evaluate(&rebuilt.scenario, &rebuilt.record);
+    let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
+    // No planner ran (an empty sum of times is -0).
+    report.planning.total_planning_time_s = 0.0;
+    let judgement = output::Judgement::new(&evaluation, report, rebuilt.input.clone());
+    Ok((rebuilt, evaluation, judgement))
+}
+
 /// Runs `vorrt judge`: exit 0 when the tracks are safe and compliant, 1
 /// when not.
 ///
@@ -150,11 +184,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
     let bytes = std::fs::read(&args.tracks)
         .map_err(|error| CliError::BadInput(format!("cannot read {file}: {error}")))?;
     let text = String::from_utf8_lossy(&bytes);
-    let tracks = match detect(&args.tracks, &text, args.format) {
-        TracksFormat::Csv => tracks::read_csv(&file, &text)?,
-        TracksFormat::Geojson => formats::read_geojson(&file, &text)?,
-        TracksFormat::Ais => formats::read_ais(&file, &text)?,
-    };
+    let format = detect(&args.tracks, &text, args.format);
     let scenario = args.scenario.as_deref().map(crate::run::load).transpose()?;
     let options = build::Options {
         tracks_file: file,
@@ -166,12 +196,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         default_length_m: args.length_m,
         max_turn_rate_deg_s: args.max_turn_rate_deg_s,
     };
-    let rebuilt = build::rebuild(tracks, scenario, &options)?;
-    let evaluation = vorrt_scenarios::evaluate(&rebuilt.scenario, &rebuilt.record);
-    let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
-    // No planner ran (an empty sum of times is -0).
-    report.planning.total_planning_time_s = 0.0;
-    let judgement = output::Judgement::new(&evaluation, report, rebuilt.input);
+    let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, &options)?;
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out")
             .join("judge")
@@ -192,9 +217,16 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         .map_err(|error| CliError::Output(format!("cannot write {}: {error}", path.display())))?;
     crate::plot::write_plots(&rebuilt.scenario, &rebuilt.record, &evaluation, &dir)
         .map_err(CliError::Output)?;
+    crate::replay::write_replay(
+        &rebuilt.scenario,
+        &rebuilt.record,
+        &evaluation,
+        &judgement.report,
+        &dir,
+    )?;
     console::print(&output::table(&judgement));
     console::line(&format!(
-        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png}}",
+        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,replay.html}}",
         dir.display()
     ));
     Ok(if judgement.safe_and_compliant {
