@@ -153,6 +153,21 @@ pub(crate) enum Command {
     /// docs/real-data.md.
     #[command(after_help = EXIT_CODES)]
     ImportAis(crate::import_ais::ImportAisArgs),
+    /// Clip and simplify a coastline into the land GeoJSON of a scenario.
+    ///
+    /// Reads land polygons from GeoJSON, TopoJSON (e.g. Natural Earth's
+    /// land-10m.json from the npm package world-atlas) or an ESRI shapefile
+    /// (e.g. GSHHS L1), keeps the part inside --bbox, simplifies it to
+    /// --tolerance-m in a local metric frame keeping every ring valid, drops
+    /// pieces under --min-area-m2 and writes GeoJSON (RFC 7946) for a
+    /// scenario's land_geojson. No land in the box is a warning, not an error.
+    /// See docs/decisions/0038-coastline-sources-and-simplification.md.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
+    #[command(after_help = EXIT_CODES)]
+    Coast(crate::coast::CoastArgs),
     /// Judge recorded tracks (any planner's) against COLREGs, as the
     /// project's own evaluation judges a run.
     ///

@@ -53,6 +53,7 @@ pub(crate) fn run(cli: Cli) -> Result<ExitStatus, CliError> {
         Command::Merge(args) => batch::merge_command(&args),
         Command::ImportAis(args) => crate::import_ais::import_ais_command(&args),
         Command::Judge(args) => crate::judge::judge_command(&args),
+        Command::Coast(args) => crate::coast::coast_command(&args),
     }
 }
 

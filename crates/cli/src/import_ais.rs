@@ -10,6 +10,10 @@ use vorrt_ais::{DEFAULT_RANGE_NM, ImportOptions, LineCounts, build_scenario, rea
 
 /// `vorrt import-ais`.
 #[derive(Debug, Clone, Args)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap help text, printed verbatim by --help"
+)]
 pub(crate) struct ImportAisArgs {
     /// The AIS log: NMEA 0183 !AIVDM/!AIVDO sentences, optionally behind
     /// NMEA 4.0 tag blocks (\c:UNIXTIME,...*hh\) that give the times.
@@ -30,6 +34,15 @@ pub(crate) struct ImportAisArgs {
     /// Leave out vessels farther than this from ownship, nautical miles.
     #[arg(long, value_name = "R", default_value_t = DEFAULT_RANGE_NM)]
     pub(crate) range_nm: f64,
+    /// A coastline (any file vorrt coast reads): clipped to the scenario's
+    /// area and written as land.geojson beside the scenario, which names it
+    /// in land_geojson.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) coast: Option<PathBuf>,
+    /// The margin kept around the vessels and the goal when clipping
+    /// --coast, nautical miles.
+    #[arg(long, value_name = "NM", default_value_t = crate::coast::DEFAULT_COAST_MARGIN_NM)]
+    pub(crate) coast_margin_nm: f64,
 }
 
 fn parse_goal(text: &str) -> Result<(f64, f64), CliError> {
@@ -102,10 +115,19 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
     for note in &import.notes {
         console::warn(&format!("note: {note}"));
     }
-    let text = import
+    let mut text = import
         .scenario
         .to_ron_string()
         .map_err(|error| CliError::Output(error.to_string()))?;
+    if let Some(coast) = &args.coast {
+        text = crate::coast::add_land(
+            &import.scenario,
+            &text,
+            coast,
+            args.coast_margin_nm,
+            &args.out,
+        )?;
+    }
     if let Some(parent) = args
         .out
         .parent()

@@ -5,6 +5,7 @@
 
 mod args;
 mod batch;
+mod coast;
 mod commands;
 mod console;
 mod demo;

@@ -2,6 +2,7 @@
 #![forbid(missing_docs)]
 
 pub mod batch;
+pub mod coastline;
 pub mod convert;
 pub mod error;
 pub mod evaluation;
