@@ -26,6 +26,12 @@ impl Scenario {
     /// [`ScenarioError::Syntax`] when the text is not a scenario (with the
     /// line and column), [`ScenarioError::Invalid`] when a value breaks a rule.
     pub fn from_ron_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
+        Self::parse(text, source, None)
+    }
+
+    /// As [`Scenario::from_ron_str`], resolving a relative `land_geojson`
+    /// from `base_dir` (`None`: the current directory).
+    fn parse(text: &str, source: &str, base_dir: Option<&Path>) -> Result<Scenario, ScenarioError> {
         let syntax = |error: ron::error::SpannedError, path: Option<String>| {
             let message = error.code.to_string();
             ScenarioError::Syntax {
@@ -58,6 +64,7 @@ impl Scenario {
             .end()
             .map_err(|error| syntax(deserializer.span_error(error), None))?;
         source.clone_into(&mut scenario.source);
+        scenario.base_dir = base_dir.map(Path::to_path_buf);
         scenario.validate()?;
         Ok(scenario)
     }
@@ -72,7 +79,7 @@ impl Scenario {
             path: path.to_owned(),
             source,
         })?;
-        Self::from_ron_str(&text, &path.display().to_string())
+        Self::parse(&text, &path.display().to_string(), path.parent())
     }
 
     /// The scenario as pretty-printed RON, in the format it was read from.
@@ -179,6 +186,12 @@ mod tests {
                 to_nm: (0.1, 5.0),
                 width_nm: 0.75,
             }],
+            land: Vec::new(),
+            no_go: Vec::new(),
+            land_geojson: None,
+            land_clearance_m: None,
+            geojson_land: Vec::new(),
+            base_dir: None,
             seed: Some(u64::MAX),
             start_time: None,
             source: "everything".into(),
