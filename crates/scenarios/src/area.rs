@@ -6,7 +6,7 @@
 //! `holes_m`) or latitude and longitude (`outer_lat_lon`,
 //! `holes_lat_lon`, geographic scenarios only), as vessels do. Validation
 //! checks every ring and projects it into the local frame
-//! ([`Area::rings_m`]); `land_geojson` polygons are read from a GeoJSON
+//! ([`Area::rings_m`]); `land_geojson` polygons are read from a `GeoJSON`
 //! file ([`crate::geojson_land`]).
 
 use crate::geo::{LocalFrame, MAX_GEO_EXTENT_NM, check_lat_lon};
@@ -33,6 +33,9 @@ pub const MAX_LAND_CLEARANCE_M: f64 = 10.0 * units::NAUTICAL_MILE_M;
 /// The most vertices all of a scenario's areas may have together: keeps
 /// validation (the self-intersection check) and loading within seconds.
 pub const MAX_AREA_VERTICES: usize = 200_000;
+
+/// An area's rings as written: the unit's name, the outer ring, the holes.
+type Rings<'a> = (&'static str, &'a [(f64, f64)], &'a [Vec<(f64, f64)>]);
 
 /// One polygon with holes: an island, a coast, a no-go area (written
 /// `Area(...)` in RON). Rings are `(east, north)` (or `(latitude,
@@ -107,8 +110,8 @@ impl Area {
     /// The unit the area is given in: `"nm"`, `"m"` or `"lat_lon"`, with
     /// its outer ring and holes; `Err` names the field at fault when none or
     /// several outer rings are given, or holes in another unit.
-    fn rings(&self) -> Result<(&'static str, &[(f64, f64)], &[Vec<(f64, f64)>]), (String, String)> {
-        let given: Vec<(&'static str, &[(f64, f64)], &[Vec<(f64, f64)>])> = [
+    fn rings(&self) -> Result<Rings<'_>, (String, String)> {
+        let given: Vec<Rings<'_>> = [
             ("nm", self.outer_nm.as_deref(), self.holes_nm.as_slice()),
             ("m", self.outer_m.as_deref(), self.holes_m.as_slice()),
             (
@@ -185,9 +188,9 @@ impl Area {
             } else {
                 format!("holes_{unit}[{}]", index - 1)
             };
-            let ring_m = project_ring(ring, unit, frame).map_err(|problem| (field, problem))?;
-            vertices += ring_m.len();
-            rings_m.push(ring_m);
+            let projected = project_ring(ring, unit, frame).map_err(|problem| (field, problem))?;
+            vertices += projected.len();
+            rings_m.push(projected);
         }
         self.rings_m = rings_m;
         let polygon = self.polygon_m();
@@ -219,7 +222,7 @@ impl Area {
 }
 
 /// Checks `land_clearance_m`, reads `land_geojson`, and checks and projects
-/// every area of `land`, `no_go` and the GeoJSON file: `Err((field,
+/// every area of `land`, `no_go` and the `GeoJSON` file: `Err((field,
 /// problem))` naming the area (`land[2].outer_nm`). Run by
 /// [`Scenario::validate`] after the geographic fields.
 pub(crate) fn check_areas(scenario: &mut Scenario) -> Result<(), (String, String)> {
@@ -367,7 +370,8 @@ mod tests {
         let mut outside = Area::from_nm("x", square_nm(1.0));
         outside.holes_nm = vec![
             vec![(0.25, 0.25), (0.5, 0.25), (0.5, 0.5)],
-            vec![(3.0, 3.0), (4.0, 3.0), (4.0, 4.0)]];
+            vec![(3.0, 3.0), (4.0, 3.0), (4.0, 4.0)],
+        ];
         let (field, problem) = check(&mut outside);
         assert_eq!(field, "holes_nm[1]", "{problem}");
         let mut mixed = Area::from_nm("x", square_nm(1.0));

@@ -1,4 +1,4 @@
-//! Land polygons from a GeoJSON file (RFC 7946): a scenario's
+//! Land polygons from a `GeoJSON` file (RFC 7946): a scenario's
 //! `land_geojson`.
 //!
 //! The file holds a `FeatureCollection`, a `Feature`, a
@@ -12,7 +12,7 @@ use crate::area::Area;
 use serde_json::Value;
 use std::path::Path;
 
-/// Reads the land polygons of the GeoJSON file at `path`.
+/// Reads the land polygons of the `GeoJSON` file at `path`.
 ///
 /// # Errors
 /// What is wrong, naming the place in the file (`features[2].geometry.coordinates[0][5]`):
@@ -24,7 +24,7 @@ pub fn read_land_geojson(path: &Path) -> Result<Vec<Area>, String> {
     parse_land_geojson(&text).map_err(|problem| format!("{}: {problem}", path.display()))
 }
 
-/// The land polygons of GeoJSON text (see [`read_land_geojson`]).
+/// The land polygons of `GeoJSON` text (see [`read_land_geojson`]).
 ///
 /// ```
 /// let text = r#"{"type": "Feature", "properties": {"name": "rock"},
@@ -44,7 +44,7 @@ pub fn parse_land_geojson(text: &str) -> Result<Vec<Area>, String> {
     Ok(areas)
 }
 
-/// The `type` member of a GeoJSON object.
+/// The `type` member of a `GeoJSON` object.
 fn kind<'a>(value: &'a Value, at: &str) -> Result<&'a str, String> {
     value
         .get("type")

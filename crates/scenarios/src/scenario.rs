@@ -50,7 +50,7 @@ pub struct Scenario {
     /// clearance beyond its own hull. See [`Area`].
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub no_go: Vec<Area>,
-    /// A GeoJSON file (RFC 7946) whose polygons are added to `land`
+    /// A `GeoJSON` file (RFC 7946) whose polygons are added to `land`
     /// (geographic scenarios only). A relative path is resolved from the
     /// scenario file's directory ([`Scenario::load`]), or from the current
     /// directory for a scenario read from text ([`Scenario::from_ron_str`]).

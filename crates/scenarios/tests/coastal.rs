@@ -11,9 +11,7 @@ use geo::{Distance, Euclidean, LineString, Point, Polygon};
 use proptest::prelude::*;
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};
-use vorrt_scenarios::{
-    Area, Scenario, SimulationRecord, VesselSpec, evaluate, fixtures, simulate,
-};
+use vorrt_scenarios::{Area, Scenario, SimulationRecord, VesselSpec, evaluate, fixtures, simulate};
 
 const NM: f64 = 1852.0;
 
@@ -117,7 +115,8 @@ fn the_island_across_the_route_is_rounded_clear() {
     open_sea.land.clear();
     open_sea.validate().expect("valid");
     let straight = simulate(&open_sea, 1).expect("runs");
-    assert_eq!(sampled_land_distance_m(&straight, &polygons_m(&scenario.land)), 0.0);
+    let through_m = sampled_land_distance_m(&straight, &polygons_m(&scenario.land));
+    assert!(through_m <= 0.0, "{through_m}");
     assert!(evaluation.path_overhead_pct > 0.5, "{}", evaluation.table());
     assert!(sampled_m < 0.5 * NM, "{sampled_m}");
 }
@@ -198,7 +197,12 @@ fn coastal_scenario(seed: u64) -> Option<Scenario> {
     for index in 0..islands {
         let centre = (1.6 * unit(&mut rng) - 0.8, 3.0 * unit(&mut rng) - 1.5);
         let radius_nm = 0.2 + 0.4 * unit(&mut rng);
-        land.push(island(&mut rng, &format!("island {index}"), centre, radius_nm));
+        land.push(island(
+            &mut rng,
+            &format!("island {index}"),
+            centre,
+            radius_nm,
+        ));
     }
     if rng.next_u64() % 2 == 0 {
         // A straight coast 1.5-2 nm to one side, beyond the islands.
@@ -229,9 +233,8 @@ fn coastal_scenario(seed: u64) -> Option<Scenario> {
     )
     .ok()?;
     scenario.name = format!("coastal-{seed}");
-    scenario.targets = vec![
-        VesselSpec::new("TS1", start, course_deg, speed_kn, 120.0).with_goal_nm(goal),
-    ];
+    scenario.targets =
+        vec![VesselSpec::new("TS1", start, course_deg, speed_kn, 120.0).with_goal_nm(goal)];
     scenario.land = land;
     scenario.validate().ok()?;
     Some(scenario)

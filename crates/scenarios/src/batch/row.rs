@@ -95,10 +95,10 @@ pub struct BatchRow {
     #[serde(default = "not_recorded")]
     pub time_overhead_pct: f64,
     /// The least distance from ownship's track to land, metres
-    /// ([`Evaluation::min_land_distance_m`]); not a number when the
-    /// scenario has no land (or the row predates the column).
-    #[serde(default = "not_recorded")]
-    pub min_land_distance_m: f64,
+    /// ([`Evaluation::min_land_distance_m`]); empty when the scenario has
+    /// no land (or the row predates the column).
+    #[serde(default)]
+    pub min_land_distance_m: Option<f64>,
     /// Whether ownship's track touched or crossed land.
     #[serde(default)]
     pub grounding: bool,
@@ -176,7 +176,7 @@ impl BatchRow {
             give_way_early: 0,
             rule_departures: 0,
             time_overhead_pct: f64::NAN,
-            min_land_distance_m: f64::NAN,
+            min_land_distance_m: None,
             grounding: false,
             land_clearance_violation: false,
         }
@@ -208,7 +208,7 @@ impl BatchRow {
             min_distance_m: evaluation.min_distance_m,
             clearance_m: evaluation.clearance_m,
             clearance_violation: !evaluation.clearance_kept,
-            min_land_distance_m: evaluation.min_land_distance_m.unwrap_or(f64::NAN),
+            min_land_distance_m: evaluation.min_land_distance_m,
             grounding: evaluation.grounding,
             land_clearance_violation: !evaluation.land_clearance_kept,
             compliant: evaluation.compliant,

@@ -221,7 +221,9 @@ impl BatchSummary {
                 .iter()
                 .filter(|row| row.land_clearance_violation)
                 .count(),
-            min_land_distance_m: Percentiles::of(ran.iter().map(|row| row.min_land_distance_m)),
+            min_land_distance_m: Percentiles::of(
+                ran.iter().filter_map(|row| row.min_land_distance_m),
+            ),
         }
     }
 
