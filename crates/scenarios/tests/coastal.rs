@@ -132,8 +132,15 @@ fn a_crossing_with_a_coast_to_starboard_keeps_off_it() {
     sail_and_check(&scenario, 1).expect("clear of land");
     assert!(evaluation.success(), "{}", evaluation.table());
     // Ownship still gives way to TS1 (rules 15, 16), within what the coast
-    // leaves it.
+    // leaves it: here by slowing and passing astern (rule 8(e)), judged
+    // compliant; the time overhead is the speed change.
     assert!(!evaluation.collision && evaluation.clearance_kept);
+    assert!(evaluation.compliant, "{}", evaluation.table());
+    assert!(
+        evaluation.time_overhead_pct > evaluation.path_overhead_pct + 5.0,
+        "{}",
+        evaluation.table()
+    );
     // The same crossing in the open sea turns to starboard more boldly than
     // the coast allows: the coast changed the manoeuvre.
     let mut open_sea = scenario.clone();

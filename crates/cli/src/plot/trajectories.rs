@@ -55,6 +55,7 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .draw()
         .map_err(to_text)?;
 
+    super::land::draw_land(&mut chart, &data.land, &view)?;
     draw_lanes(&mut chart, data, &view)?;
     draw_clearance_circles(&mut chart, data)?;
     // Targets first, ownship on top.
