@@ -124,6 +124,39 @@ impl PartialEq for Scenario {
 }
 
 impl Scenario {
+    /// A scenario called `name` with `ownship` and nothing else: no targets,
+    /// default planner and simulation settings, no lanes, no land, no seed.
+    /// Not yet validated ([`Scenario::validate`]).
+    ///
+    /// ```
+    /// use vorrt_scenarios::{Scenario, VesselSpec};
+    /// let own = VesselSpec::new("own", (0.0, 0.0), 0.0, 10.0, 50.0).with_goal_nm((0.0, 4.0));
+    /// let mut scenario = Scenario::new("empty sea", own);
+    /// scenario.validate().unwrap();
+    /// assert!(scenario.targets.is_empty() && scenario.land.is_empty());
+    /// ```
+    #[must_use]
+    pub fn new(name: impl Into<String>, ownship: VesselSpec) -> Self {
+        Self {
+            name: name.into(),
+            description: None,
+            ownship,
+            targets: Vec::new(),
+            planner: PlannerSettings::default(),
+            simulation: SimulationSettings::default(),
+            lanes: Vec::new(),
+            land: Vec::new(),
+            no_go: Vec::new(),
+            land_geojson: None,
+            land_clearance_m: None,
+            geojson_land: Vec::new(),
+            base_dir: None,
+            seed: None,
+            start_time: None,
+            source: String::new(),
+        }
+    }
+
     /// Whether the scenario places its vessels in latitude and longitude
     /// (ownship has a `start_lat_lon`).
     #[must_use]
