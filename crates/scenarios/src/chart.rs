@@ -6,7 +6,7 @@
 //! scenario, so every plan, replan, check of the plan in force and evasive
 //! manoeuvre keeps off land, and [`evaluate`](crate::evaluate) measures the
 //! sailed track with the same geometry. An empty chart (the open sea)
-//! refuses nothing and costs two untaken branches per query.
+//! refuses nothing and costs one untaken branch per query.
 
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
@@ -41,6 +41,8 @@ pub struct Chart {
     land: Option<Arc<LandConstraint>>,
     /// No-go areas, kept half ownship's length off (`None`: none).
     no_go: Option<Arc<LandConstraint>>,
+    /// Whether there is either: the open sea's queries test this alone.
+    occupied: bool,
     /// The clearance the track is judged against, metres.
     land_clearance_m: f64,
     /// The clearance the planner keeps, metres.
@@ -89,9 +91,12 @@ impl Chart {
                 .map(|constraint| Some(Arc::new(constraint)))
                 .map_err(|error| invalid(field, format!("{error} (validate the scenario first)")))
         };
+        let land = build(&land, planner_land_clearance_m, "land", false)?;
+        let no_go = build(&no_go, half_length_m, "no_go", true)?;
         Ok(Self {
-            land: build(&land, planner_land_clearance_m, "land", false)?,
-            no_go: build(&no_go, half_length_m, "no_go", true)?,
+            occupied: land.is_some() || no_go.is_some(),
+            land,
+            no_go,
             land_clearance_m,
             planner_land_clearance_m,
         })
@@ -100,7 +105,7 @@ impl Chart {
     /// Whether there is neither land nor a no-go area.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.land.is_none() && self.no_go.is_none()
+        !self.occupied
     }
 
     /// Whether there is land.
@@ -226,6 +231,9 @@ impl Chart {
 impl Constraint for Chart {
     #[inline]
     fn check_segment(&self, segment: &Segment) -> Result<(), ConstraintViolation> {
+        if !self.occupied {
+            return Ok(());
+        }
         if let Some(land) = &self.land {
             land.check_segment(segment)?;
         }
@@ -237,6 +245,9 @@ impl Constraint for Chart {
 
     #[inline]
     fn admits_point(&self, point_m: DVec2) -> bool {
+        if !self.occupied {
+            return true;
+        }
         self.land
             .as_ref()
             .is_none_or(|land| land.admits_point(point_m))
