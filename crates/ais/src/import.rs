@@ -5,7 +5,7 @@ use crate::error::AisError;
 use crate::log::{AisLog, PositionReport, VesselTrack};
 use vorrt_geometry::{DVec2, units};
 use vorrt_scenarios::geo::{LocalFrame, check_lat_lon, format_utc_time};
-use vorrt_scenarios::{MAX_LENGTH_M, PlannerSettings, Scenario, SimulationSettings, VesselSpec};
+use vorrt_scenarios::{MAX_LENGTH_M, Scenario, VesselSpec};
 
 /// The length given to a vessel without a static report, metres (a typical
 /// small coaster; said on stderr by `vorrt import-ais`).
@@ -210,28 +210,21 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         targets.push(target);
     }
     let start_time = at_unix_s.map(describe_time);
-    let scenario = Scenario {
-        name: format!("ais-{}", options.ownship_mmsi),
-        description: Some(format!(
-            "Imported from the AIS log {} by vorrt import-ais: ownship MMSI {}, {} targets within {} nm{}.",
-            options.log_name,
-            options.ownship_mmsi,
-            targets.len(),
-            options.range_nm,
-            start_time
-                .as_deref()
-                .map(|time| format!(", states dead-reckoned to {time}"))
-                .unwrap_or_default()
-        )),
-        ownship,
-        targets,
-        planner: PlannerSettings::default(),
-        simulation: SimulationSettings::default(),
-        lanes: Vec::new(),
-        seed: None,
-        start_time,
-        source: format!("{} (imported)", options.log_name),
-    };
+    let mut scenario = Scenario::new(format!("ais-{}", options.ownship_mmsi), ownship);
+    scenario.description = Some(format!(
+        "Imported from the AIS log {} by vorrt import-ais: ownship MMSI {}, {} targets within {} nm{}.",
+        options.log_name,
+        options.ownship_mmsi,
+        targets.len(),
+        options.range_nm,
+        start_time
+            .as_deref()
+            .map(|time| format!(", states dead-reckoned to {time}"))
+            .unwrap_or_default()
+    ));
+    scenario.targets = targets;
+    scenario.start_time = start_time;
+    scenario.source = format!("{} (imported)", options.log_name);
     // Validate as a loaded file would be: through the text.
     let text = scenario.to_ron_string()?;
     let scenario = Scenario::from_ron_str(&text, &scenario.source)?;

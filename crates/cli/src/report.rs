@@ -44,13 +44,25 @@ pub struct Report {
     pub min_distance_m: Option<f64>,
     /// Whether every target stayed at least `d_th_m` away.
     pub clearance_kept: bool,
+    /// Whether ownship's track touched or crossed land (a safety failure
+    /// beside a collision; decision 29).
+    pub grounding: bool,
+    /// The least distance from ownship's track to land, metres, measured
+    /// along the curve sailed (`null` when the scenario has no land).
+    pub min_land_distance_m: Option<f64>,
+    /// The clearance from land the track is judged against
+    /// (`land_clearance_m`), metres (`null` with no land).
+    pub land_clearance_m: Option<f64>,
+    /// Whether the track kept `land_clearance_m` from land (true with no land).
+    pub land_clearance_kept: bool,
     /// Whether ownship obeyed COLREGs in every encounter, judged on the
     /// track as observed: no finding (see `docs/evaluation.md`, "Judging the
     /// track as observed").
     pub compliant: bool,
     /// Ownship's path quality as sailed.
     pub path_quality: PathQualityReport,
-    /// `reached_goal && !collision && clearance_kept`: the run succeeded
+    /// `reached_goal && !collision && clearance_kept && !grounding &&
+    /// land_clearance_kept`: the run succeeded
     /// (`vorrt_scenarios::Evaluation::success`; exit code 0 of `vorrt simulate`).
     pub reached_goal_safely: bool,
     /// Planner calls during the run.
@@ -242,6 +254,10 @@ impl Report {
                 .is_finite()
                 .then_some(evaluation.min_distance_m),
             clearance_kept: evaluation.clearance_kept,
+            grounding: evaluation.grounding,
+            min_land_distance_m: evaluation.min_land_distance_m,
+            land_clearance_m: evaluation.land_clearance_m,
+            land_clearance_kept: evaluation.land_clearance_kept,
             compliant: evaluation.compliant,
             path_quality: PathQualityReport {
                 max_turn_rate_deg_s: evaluation.max_turn_rate_deg_s,
@@ -448,6 +464,20 @@ impl Report {
             None => "- (no targets)".to_owned(),
         };
         let _ = writeln!(text, "min distance:   {minimum}");
+        if let (Some(distance), Some(clearance)) = (self.min_land_distance_m, self.land_clearance_m)
+        {
+            let _ = writeln!(
+                text,
+                "land:           {distance:.1} m vs land clearance {clearance:.0} m: {}",
+                if self.grounding {
+                    "GROUNDING"
+                } else if self.land_clearance_kept {
+                    "kept"
+                } else {
+                    "BROKEN"
+                }
+            );
+        }
         let _ = writeln!(
             text,
             "COLREGs:        {}",

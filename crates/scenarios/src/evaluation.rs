@@ -26,6 +26,7 @@
 //! a port turn for a vessel on its port side still is (rule 17(c)). The
 //! planner applies the same reading (`vorrt_colregs::check_maneuver_acting`).
 
+use crate::chart::Chart;
 use crate::scenario::Scenario;
 use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
@@ -100,6 +101,23 @@ pub struct Evaluation {
     pub min_distance_m: f64,
     /// Whether every target kept `d_th`.
     pub clearance_kept: bool,
+    /// The least distance from ownship's track to land, metres (`None`:
+    /// the scenario has no land); measured along the curve sailed
+    /// ([`Chart::judge_track`]).
+    #[serde(default)]
+    pub min_land_distance_m: Option<f64>,
+    /// The clearance from land judged against (`land_clearance_m`), metres
+    /// (`None`: no land).
+    #[serde(default)]
+    pub land_clearance_m: Option<f64>,
+    /// Whether ownship's track touched or crossed land: a safety failure
+    /// beside a collision (decision 29).
+    #[serde(default)]
+    pub grounding: bool,
+    /// Whether the track kept `land_clearance_m` from land (true with no
+    /// land).
+    #[serde(default = "kept")]
+    pub land_clearance_kept: bool,
     /// No finding under the observed evaluation: no rule broken in any
     /// encounter and no track finding.
     pub compliant: bool,
@@ -147,7 +165,8 @@ pub struct Evaluation {
 
 impl Evaluation {
     /// Whether the run **succeeded**: ownship reached its goal, no hull
-    /// touched another, and every target kept the clearance `d_th`.
+    /// touched another, every target kept the clearance `d_th`, and the
+    /// track neither grounded nor came within `land_clearance_m` of land.
     /// COLREGs compliance is not part of it (see [`Self::safe_and_compliant`]).
     ///
     /// The one success criterion of a closed-loop run: `report.json`'s
@@ -156,16 +175,25 @@ impl Evaluation {
     /// exit codes all read it.
     #[must_use]
     pub fn success(&self) -> bool {
-        succeeded(self.reached_goal, self.collision, self.clearance_kept)
+        succeeded(
+            self.reached_goal,
+            self.collision || self.grounding,
+            self.clearance_kept && self.land_clearance_kept,
+        )
     }
 
-    /// Whether the tracks were **safe and compliant**: no collision, `d_th`
-    /// kept from every target, and no finding under the observed evaluation
+    /// Whether the tracks were **safe and compliant**: no collision and no
+    /// grounding, `d_th` kept from every target and `land_clearance_m`
+    /// from land, and no finding under the observed evaluation
     /// (`compliant`). Whether ownship reached a goal is not asked: recorded
     /// tracks (`vorrt judge`) need not end at one. Exit code 0 of `vorrt judge`.
     #[must_use]
     pub fn safe_and_compliant(&self) -> bool {
-        !self.collision && self.clearance_kept && self.compliant
+        !self.collision
+            && !self.grounding
+            && self.clearance_kept
+            && self.land_clearance_kept
+            && self.compliant
     }
 
     /// The evaluation as a plain-text table: one row per target, then the run's
@@ -217,6 +245,20 @@ impl Evaluation {
             self.failed_plans,
             self.planning_time_s * 1e3,
         );
+        if let (Some(distance_m), Some(clearance_m)) =
+            (self.min_land_distance_m, self.land_clearance_m)
+        {
+            let _ = writeln!(
+                text,
+                "land: min distance {distance_m:.0} m (clearance {clearance_m:.0} m): {} | grounding: {}",
+                if self.land_clearance_kept {
+                    "kept"
+                } else {
+                    "BROKEN"
+                },
+                if self.grounding { "YES" } else { "no" },
+            );
+        }
         let _ = writeln!(
             text,
             "path quality: largest rate of turn {:.2}°/s{} | {} turn reversals | {:.1}° of course change per nm{}",
@@ -233,6 +275,12 @@ impl Evaluation {
         );
         text
     }
+}
+
+/// The default of [`Evaluation::land_clearance_kept`] in results written
+/// before it existed: no land, so kept.
+fn kept() -> bool {
+    true
 }
 
 /// [`Evaluation::success`] from its three parts, for results that keep them
@@ -307,6 +355,11 @@ pub fn evaluate_with(
             false,
         ),
     };
+    // The chart of a validated scenario always builds; one that does not
+    // (areas never validated) has no land to judge.
+    let land = Chart::from_scenario(scenario).ok().and_then(|chart| {
+        chart.judge_track(&record.times_s, &record.ownship, record.max_turn_rate_rad_s)
+    });
     let start = scenario.ownship_state().position_m;
     let straight_length_m = start.distance(scenario.ownship_goal_m());
     let speed = scenario.ownship_state().speed_mps;
@@ -335,6 +388,10 @@ pub fn evaluate_with(
             .map(|target| target.min_distance_m)
             .fold(f64::INFINITY, f64::min),
         clearance_kept: targets.iter().all(|target| target.clearance_kept),
+        min_land_distance_m: land.map(|land| land.min_distance_m),
+        land_clearance_m: land.map(|land| land.clearance_m),
+        grounding: land.is_some_and(|land| land.grounding),
+        land_clearance_kept: land.is_none_or(|land| land.clearance_kept),
         compliant,
         max_turn_rate_deg_s: path.map_or(0.0, |path| path.max_turn_rate_deg_s),
         turn_rate_limit_deg_s: record.max_turn_rate_rad_s.map(f64::to_degrees),

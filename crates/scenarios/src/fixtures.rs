@@ -1,6 +1,7 @@
 //! The bundled scenarios, embedded in the library: the paper's reference
-//! encounters (`paper`), the 22 Imazu problems (`imazu`) and a geographic
-//! scenario imported from AIS (`geo`). Their files are this crate's
+//! encounters (`paper`), the 22 Imazu problems (`imazu`), a geographic
+//! scenario imported from AIS (`geo`) and coastal encounters with land
+//! (`coastal`). Their files are this crate's
 //! `fixtures/<group>/<file>`; they are compiled in so that a program using
 //! them (`vorrt demo`) needs no checkout beside it. A test checks that every
 //! `*.ron` file of those folders is in [`BUNDLED`] with the same text.
@@ -103,6 +104,8 @@ pub const BUNDLED: &[Fixture] = &[
     fixture!("imazu", "imazu_21.ron"),
     fixture!("imazu", "imazu_22.ron"),
     fixture!("geo", "channel_ais.ron"),
+    fixture!("coastal", "crossing_coast.ron"),
+    fixture!("coastal", "island.ron"),
 ];
 
 /// The bundled fixture called `name`: `<group>/<file>` with or without the
@@ -134,7 +137,7 @@ mod tests {
     fn every_fixture_file_is_embedded() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
         let mut on_disk = Vec::new();
-        for group in ["paper", "imazu", "geo"] {
+        for group in ["paper", "imazu", "geo", "coastal"] {
             let mut files: Vec<String> = std::fs::read_dir(root.join(group))
                 .expect("fixture folder")
                 .map(|entry| {
@@ -186,6 +189,7 @@ mod tests {
         assert_eq!(group("paper").count(), 5);
         assert_eq!(group("imazu").count(), 22);
         assert_eq!(group("geo").count(), 1);
+        assert_eq!(group("coastal").count(), 2);
         assert_eq!(group("golden").count(), 0);
     }
 }

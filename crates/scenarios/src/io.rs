@@ -69,6 +69,12 @@ impl Scenario {
     /// [`ScenarioError::Syntax`] when the text is not a scenario (with the
     /// line and column), [`ScenarioError::Invalid`] when a value breaks a rule.
     pub fn from_ron_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
+        Self::parse_ron(text, source, None)
+    }
+
+    /// As [`Scenario::from_ron_str`], resolving a relative `land_geojson`
+    /// from `base_dir` (`None`: the current directory).
+    fn parse_ron(text: &str, source: &str, base_dir: Option<&Path>) -> Result<Scenario, ScenarioError> {
         let syntax = |error: ron::error::SpannedError, path: Option<String>| {
             let message = error.code.to_string();
             ScenarioError::Syntax {
@@ -101,6 +107,7 @@ impl Scenario {
             .end()
             .map_err(|error| syntax(deserializer.span_error(error), None))?;
         source.clone_into(&mut scenario.source);
+        scenario.base_dir = base_dir.map(Path::to_path_buf);
         scenario.validate()?;
         Ok(scenario)
     }
@@ -114,6 +121,16 @@ impl Scenario {
     /// line, the column and the field), [`ScenarioError::Invalid`] when a
     /// value breaks a rule.
     pub fn from_json_str(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
+        Self::parse_json(text, source, None)
+    }
+
+    /// As [`Scenario::from_json_str`], resolving a relative `land_geojson`
+    /// from `base_dir` (`None`: the current directory).
+    fn parse_json(
+        text: &str,
+        source: &str,
+        base_dir: Option<&Path>,
+    ) -> Result<Scenario, ScenarioError> {
         let syntax = |path: String, error: &serde_json::Error| {
             // The position is in the message's prefix already.
             let text = error.to_string();
@@ -138,6 +155,7 @@ impl Scenario {
             .end()
             .map_err(|error| syntax(String::new(), &error))?;
         source.clone_into(&mut scenario.source);
+        scenario.base_dir = base_dir.map(Path::to_path_buf);
         scenario.validate()?;
         Ok(scenario)
     }
@@ -157,8 +175,8 @@ impl Scenario {
         let source = path.display().to_string();
         let (format, guessed) = ScenarioFormat::detect(path, &text);
         let loaded = match format {
-            ScenarioFormat::Ron => Self::from_ron_str(&text, &source),
-            ScenarioFormat::Json => Self::from_json_str(&text, &source),
+            ScenarioFormat::Ron => Self::parse_ron(&text, &source, path.parent()),
+            ScenarioFormat::Json => Self::parse_json(&text, &source, path.parent()),
         };
         loaded.map_err(|error| match error {
             ScenarioError::Syntax {
@@ -306,6 +324,12 @@ mod tests {
                 to_nm: (0.1, 5.0),
                 width_nm: 0.75,
             }],
+            land: Vec::new(),
+            no_go: Vec::new(),
+            land_geojson: None,
+            land_clearance_m: None,
+            geojson_land: Vec::new(),
+            base_dir: None,
             seed: Some(u64::MAX),
             start_time: None,
             source: "everything".into(),

@@ -1,7 +1,9 @@
 #![doc = include_str!("../README.md")]
 #![forbid(missing_docs)]
 
+pub mod area;
 pub mod batch;
+pub mod chart;
 pub mod coastline;
 pub mod convert;
 pub mod error;
@@ -9,13 +11,16 @@ pub mod evaluation;
 pub mod fixtures;
 pub mod generator;
 pub mod geo;
+pub mod geojson_land;
 pub mod io;
 pub mod planner_settings;
 pub mod scenario;
 pub mod simulation;
 pub mod validate;
 
+pub use area::{Area, DEFAULT_LAND_CLEARANCE_M, MAX_LAND_CLEARANCE_M};
 pub use batch::{BatchError, BatchItem, BatchRow, BatchSummary, Shard, run_batch};
+pub use chart::Chart;
 pub use error::ScenarioError;
 pub use evaluation::{
     Evaluation, TargetEvaluation, evaluate, evaluate_with, observed_judgement, scoring_for,

@@ -51,7 +51,7 @@ impl Who<'_> {
 }
 
 /// The start field a vessel uses.
-fn start_field(vessel: &VesselSpec) -> &'static str {
+pub(crate) fn start_field(vessel: &VesselSpec) -> &'static str {
     if vessel.start_nm.is_some() {
         "start_nm"
     } else if vessel.start_m.is_some() {
@@ -103,6 +103,7 @@ impl Scenario {
             }
         }
         self.check_geographic().map_err(|(f, p)| invalid(f, p))?;
+        crate::area::check_areas(self).map_err(|(f, p)| invalid(f, p))?;
         check_vessel(&mut self.ownship, Who::Ownship).map_err(|(f, p)| invalid(f, p))?;
         if self.targets.len() > MAX_TARGETS {
             return Err(invalid(
@@ -131,6 +132,7 @@ impl Scenario {
         for (index, lane) in self.lanes.iter().enumerate() {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
         }
+        crate::chart::check_off_land(self).map_err(|(f, p)| invalid(f, p))?;
         Ok(())
     }
 

@@ -13,7 +13,8 @@ pub(crate) struct Judgement {
     /// The judgement in the report's schema (`docs/report-format.md`).
     #[serde(flatten)]
     pub(crate) report: Report,
-    /// No collision, `d_th` kept and no COLREGs finding
+    /// No collision and no grounding, `d_th` and the land clearance kept,
+    /// and no COLREGs finding
     /// (`vorrt_scenarios::Evaluation::safe_and_compliant`): exit code 0.
     pub(crate) safe_and_compliant: bool,
     /// How the tracks were read, resampled and completed.

@@ -4,7 +4,8 @@
 //!   black), start dots, a course triangle every few minutes, goal crosses,
 //!   at each target's closest approach the two positions joined by a dashed
 //!   line with the distance written and the `d_th` circle around ownship,
-//!   traffic lanes as shaded strips, and a legend beside the chart.
+//!   traffic lanes as shaded strips, land filled, and a legend beside the
+//!   chart.
 //! - `distance`: distance from ownship to each target over time (minutes,
 //!   metres), `d_th` as a horizontal line, each minimum marked and labelled.
 //! - `speed`: every vessel's speed over time (minutes, knots), ownship bold
@@ -23,6 +24,7 @@ use vorrt_scenarios::{Evaluation, Scenario, SimulationRecord, TargetEvaluation};
 
 mod distance;
 mod labels;
+mod land;
 mod legend;
 mod palette;
 #[cfg(test)]
@@ -76,6 +78,8 @@ struct PlotData<'a> {
     ownship: Track<'a>,
     targets: Vec<Track<'a>>,
     lanes: Vec<LaneShape<'a>>,
+    /// Land areas, each its outer ring then its holes, nautical miles.
+    land: Vec<land::LandShape>,
 }
 
 /// A traffic lane as drawn.
@@ -159,6 +163,15 @@ impl<'a> PlotData<'a> {
             ownship,
             targets,
             lanes,
+            land: scenario
+                .land_areas()
+                .map(|area| {
+                    area.rings_m
+                        .iter()
+                        .map(|ring| ring.iter().copied().map(nm).collect())
+                        .collect()
+                })
+                .collect(),
         }
     }
 

@@ -58,6 +58,7 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .draw()
         .map_err(to_text)?;
 
+    super::land::draw_land(&mut chart, &data.land, &view)?;
     let marked = closest(&data.targets, MAX_MARKED);
     draw_lanes(&mut chart, data, &view)?;
     draw_clearance_circles(&mut chart, data, &marked)?;

@@ -94,6 +94,17 @@ pub struct BatchRow {
     /// the column existed.
     #[serde(default = "not_recorded")]
     pub time_overhead_pct: f64,
+    /// The least distance from ownship's track to land, metres
+    /// ([`Evaluation::min_land_distance_m`]); empty when the scenario has
+    /// no land (or the row predates the column).
+    #[serde(default)]
+    pub min_land_distance_m: Option<f64>,
+    /// Whether ownship's track touched or crossed land.
+    #[serde(default)]
+    pub grounding: bool,
+    /// Whether it came within `land_clearance_m` of land.
+    #[serde(default)]
+    pub land_clearance_violation: bool,
 }
 
 /// A value a row read back from an older `rows.csv` lacks.
@@ -103,12 +114,17 @@ fn not_recorded() -> f64 {
 
 impl BatchRow {
     /// Whether the run counts as a success: [`Evaluation::success`] of the
-    /// row's evaluation (goal reached, no collision, `d_th` kept); a run that
-    /// could not be made never does.
+    /// row's evaluation (goal reached, no collision and no grounding, `d_th`
+    /// and the land clearance kept); a run that could not be made never
+    /// does.
     #[must_use]
     pub fn success(&self) -> bool {
         self.error.is_empty()
-            && succeeded(self.reached_goal, self.collision, !self.clearance_violation)
+            && succeeded(
+                self.reached_goal,
+                self.collision || self.grounding,
+                !self.clearance_violation && !self.land_clearance_violation,
+            )
     }
 
     /// The compliance with `rule` (13-17), as in the row.
@@ -160,6 +176,9 @@ impl BatchRow {
             give_way_early: 0,
             rule_departures: 0,
             time_overhead_pct: f64::NAN,
+            min_land_distance_m: None,
+            grounding: false,
+            land_clearance_violation: false,
         }
     }
 
@@ -189,6 +208,9 @@ impl BatchRow {
             min_distance_m: evaluation.min_distance_m,
             clearance_m: evaluation.clearance_m,
             clearance_violation: !evaluation.clearance_kept,
+            min_land_distance_m: evaluation.min_land_distance_m,
+            grounding: evaluation.grounding,
+            land_clearance_violation: !evaluation.land_clearance_kept,
             compliant: evaluation.compliant,
             rule_13: rule(13),
             rule_14: rule(14),

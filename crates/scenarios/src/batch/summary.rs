@@ -87,7 +87,8 @@ pub struct BatchSummary {
     pub errors: usize,
     /// Fraction that reached the goal.
     pub reached_goal_rate: f64,
-    /// Fraction that reached the goal with no collision and `d_th` kept
+    /// Fraction that reached the goal with no collision or grounding and
+    /// `d_th` and the land clearance kept
     /// ([`BatchRow::success`]).
     pub success_rate: f64,
     /// Fraction with a collision (hulls touching).
@@ -137,6 +138,15 @@ pub struct BatchSummary {
     /// graded fallback plan or the evasive manoeuvre).
     #[serde(default)]
     pub runs_with_rule_departures: usize,
+    /// Runs whose track touched or crossed land (a safety failure).
+    #[serde(default)]
+    pub groundings: usize,
+    /// Runs whose track came within `land_clearance_m` of land.
+    #[serde(default)]
+    pub land_clearance_violations: usize,
+    /// The least distance to land per run with land, metres.
+    #[serde(default)]
+    pub min_land_distance_m: Percentiles,
 }
 
 impl BatchSummary {
@@ -206,6 +216,14 @@ impl BatchSummary {
             give_way_apparent_rate: share(ran.iter().map(|row| row.give_way_apparent).sum()),
             give_way_early_rate: share(ran.iter().map(|row| row.give_way_early).sum()),
             runs_with_rule_departures: rows.iter().filter(|row| row.rule_departures > 0).count(),
+            groundings: ran.iter().filter(|row| row.grounding).count(),
+            land_clearance_violations: ran
+                .iter()
+                .filter(|row| row.land_clearance_violation)
+                .count(),
+            min_land_distance_m: Percentiles::of(
+                ran.iter().filter_map(|row| row.min_land_distance_m),
+            ),
         }
     }
 

@@ -237,29 +237,48 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         }
     }
     let route_m = units::nautical_miles_to_m(2.0 * -start_north);
+    let (name, description) = describe(spec, seed, index, lanes.len(), targets.len(), own_speed_kn);
     let mut scenario = Scenario {
-        name: format!(
-            "tss-{}-{}pnm-{}-s{seed}-{index:05}",
-            spec.direction.name(),
-            spec.targets_per_nm,
-            spec.behaviour.name()
-        ),
-        description: Some(format!(
-            "Generated TSS crossing (seed {seed}, index {index}): {} lane(s) {} nm wide, {} targets/nm, {} targets; ownship north at {own_speed_kn} kn; clearance 100 m.",
-            lanes.len(),
-            spec.lane_width_nm,
-            spec.targets_per_nm,
-            targets.len()
-        )),
+        name,
+        description: Some(description),
         ownship,
         targets,
         planner: planner_for_route(route_m, Some(100.0)),
         simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
+        land: Vec::new(),
+        no_go: Vec::new(),
+        land_geojson: None,
+        land_clearance_m: None,
+        geojson_land: Vec::new(),
+        base_dir: None,
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
     };
     scenario.validate()?;
     Ok(scenario)
+}
+
+/// The name and description of a generated TSS scenario.
+fn describe(
+    spec: &TssSpec,
+    seed: u64,
+    index: u64,
+    lanes: usize,
+    targets: usize,
+    own_speed_kn: f64,
+) -> (String, String) {
+    (
+        format!(
+            "tss-{}-{}pnm-{}-s{seed}-{index:05}",
+            spec.direction.name(),
+            spec.targets_per_nm,
+            spec.behaviour.name()
+        ),
+        format!(
+            "Generated TSS crossing (seed {seed}, index {index}): {lanes} lane(s) {} nm wide, {} targets/nm, {targets} targets; ownship north at {own_speed_kn} kn; clearance 100 m.",
+            spec.lane_width_nm, spec.targets_per_nm,
+        ),
+    )
 }

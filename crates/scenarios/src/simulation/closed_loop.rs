@@ -8,6 +8,7 @@ use super::planning::{
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::target::{BehaviourTarget, TargetMotion};
+use crate::chart::Chart;
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
 use glam::DVec2;
@@ -133,8 +134,9 @@ fn graded_planners<C: Constraint + Clone>(
 #[derive(Debug)]
 struct Setup<C> {
     /// One planner per level of the graded fallback, all the rules first,
-    /// each keeping the run's constraint.
-    planners: Vec<Planner<C>>,
+    /// each keeping the scenario's chart (land, no-go areas) and the run's
+    /// constraint.
+    planners: Vec<Planner<(Chart, C)>>,
     config: PlannerConfig,
     seed: u64,
     time_step_s: f64,
@@ -156,7 +158,8 @@ struct Setup<C> {
 ///
 /// [`simulate`](super::simulate) is [`ClosedLoop::run`]; stepping by hand
 /// gives the same [`SimulationRecord`]. Ownship's planner keeps a user
-/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; none by default):
+/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; none by default),
+/// beside the scenario's [`Chart`] (land, no-go areas), which it always keeps:
 /// every plan, every check of the plan in force and the evasive manoeuvre.
 #[derive(Debug)]
 pub struct ClosedLoop<C = NoConstraint> {
@@ -263,12 +266,14 @@ impl ClosedLoop {
 
 impl<C: Constraint + Clone> ClosedLoop<C> {
     /// As [`with_motions`](ClosedLoop::with_motions), with ownship's
-    /// planner keeping `constraint` (land, a no-go area, a lane) at every
+    /// planner keeping `constraint` (a no-go area, a lane) at every
     /// level of the graded fallback, in its check of the plan in force and
-    /// in the evasive manoeuvre.
+    /// in the evasive manoeuvre, beside the scenario's own [`Chart`] (its
+    /// land and no-go areas), which every run keeps.
     ///
     /// # Errors
-    /// As [`with_motions`](ClosedLoop::with_motions).
+    /// As [`with_motions`](ClosedLoop::with_motions); field `land` when the
+    /// scenario's areas were not validated.
     pub fn with_constraint(
         scenario: &Scenario,
         config: &PlannerConfig,
@@ -281,7 +286,8 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             field: field.into(),
             problem,
         };
-        let planners = graded_planners(config, &constraint)
+        let chart = Chart::from_scenario(scenario)?;
+        let planners = graded_planners(config, &(chart, constraint))
             .map_err(|error| invalid("planner", error.to_string()))?;
         if motions.len() != scenario.targets.len() {
             return Err(invalid(
