@@ -30,7 +30,8 @@ use crate::scenario::Scenario;
 use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::observed::{
-    ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack, Recording, judge,
+    NavigationalStatus, ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack,
+    Recording, TrackNoise, judge,
 };
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
@@ -77,6 +78,15 @@ pub struct TargetEvaluation {
     /// The full assessment on the observed states (`None` when no
     /// encounter arose).
     pub assessment: Option<EncounterAssessment>,
+    /// The navigational status the target reported (tracks recorded at
+    /// sea); at anchor, moored or aground it was judged as a stationary
+    /// obstacle, on clearance alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub status: Option<NavigationalStatus>,
+    /// The encounter was unfinished when the tracks ended (still closing at
+    /// the last sample): its clearance and passing are not a verdict.
+    #[serde(default)]
+    pub undecided: bool,
 }
 
 /// How a whole run fared.
@@ -143,6 +153,10 @@ pub struct Evaluation {
     pub planning_time_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetEvaluation>,
+    /// Every track's jitter and the window and turn thresholds it was judged
+    /// with, ownship first (exact tracks: no jitter, the published values).
+    #[serde(default)]
+    pub noise: Vec<TrackNoise>,
 }
 
 impl Evaluation {
@@ -289,6 +303,10 @@ pub fn evaluate_with(
         ..ObservedParameters::default()
     };
     let judgement = judge(&recording_of(scenario, record), &parameters);
+    let noise = judgement
+        .as_ref()
+        .map(|judgement| judgement.noise.clone())
+        .unwrap_or_default();
     let (targets, path, track_findings, compliant) = match &judgement {
         Ok(judgement) => (
             judgement.targets.iter().map(target_evaluation).collect(),
@@ -353,6 +371,7 @@ pub fn evaluate_with(
         rule_departures: record.rule_departures(),
         planning_time_s: record.planning_time_s(),
         targets,
+        noise,
     }
 }
 
@@ -377,11 +396,15 @@ pub fn observed_judgement(
 /// The recorded tracks of a run, as the observed judgement reads them:
 /// positions and recorded courses of every vessel on the run's time base.
 fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
-    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64| RecordedTrack {
-        name: name.to_owned(),
-        length_m: states.first().map_or(length_m, |state| state.length_m),
-        positions_m: states.iter().map(|state| state.position_m).collect(),
-        courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+    let observation = |index: usize| record.observations.get(index).copied().unwrap_or_default();
+    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64, index: usize| {
+        RecordedTrack {
+            name: name.to_owned(),
+            length_m: states.first().map_or(length_m, |state| state.length_m),
+            positions_m: states.iter().map(|state| state.position_m).collect(),
+            courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+            observation: observation(index),
+        }
     };
     Recording {
         times_s: record.times_s.clone(),
@@ -389,6 +412,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             &scenario.ownship.name,
             &record.ownship,
             scenario.ownship.length_m,
+            0,
         ),
         targets: record
             .targets
@@ -397,7 +421,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             .map(|(index, states)| {
                 let name = record.target_names.get(index).map_or("", String::as_str);
                 let length_m = scenario.targets.get(index).map_or(1.0, |t| t.length_m);
-                track(name, states, length_m)
+                track(name, states, length_m, index + 1)
             })
             .collect(),
     }
@@ -424,5 +448,7 @@ fn target_evaluation(observed: &ObservedEncounter) -> TargetEvaluation {
         max_alteration_deg: assessment.map(|a| a.max_course_change_rad.to_degrees()),
         score: observed.score,
         assessment: assessment.cloned(),
+        status: observed.status,
+        undecided: observed.undecided,
     }
 }

@@ -138,6 +138,7 @@
 //!     length_m: 100.0,
 //!     positions_m: times_s.iter().map(|t| start + velocity * *t).collect(),
 //!     courses_rad: None,
+//!     observation: Default::default(),
 //! };
 //! let recording = Recording {
 //!     ownship: track("ownship", DVec2::ZERO, DVec2::new(0.0, 6.0)),
@@ -153,16 +154,22 @@
 //! ```
 
 mod judge;
+mod noise;
+#[cfg(test)]
+mod noise_tests;
 mod observe;
 mod parameters;
 mod quality;
 mod recording;
+mod status;
 #[cfg(test)]
 mod tests;
 
 pub use crate::compliance::episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
+pub use noise::{NoiseParameters, TrackNoise, position_noise_m, track_noise, typical_speed_mps};
 pub use observe::{OverGround, over_ground, over_ground_from};
 pub use parameters::ObservedParameters;
 pub use quality::{PathQuality, path_quality};
-pub use recording::{RecordedTrack, Recording};
+pub use recording::{RecordedTrack, Recording, TrackObservation};
+pub use status::NavigationalStatus;
