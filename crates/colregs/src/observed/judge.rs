@@ -137,7 +137,13 @@ pub fn judge(
         .collect();
     // Ownship's turns are judged above its own jitter (decision 31).
     let own_parameters = above_noise(parameters, &noise[0]);
-    let ownship = observe(times_s, &recording.ownship, noise[0].window_s);
+    let jittery = |noise: &TrackNoise| noise.window_s > parameters.window_s;
+    let ownship = observe(
+        times_s,
+        &recording.ownship,
+        noise[0].window_s,
+        jittery(&noise[0]),
+    );
     let own_states = observed_states(&recording.ownship, &ownship);
     let courses: Vec<f64> = match &recording.ownship.courses_rad {
         Some(courses) => courses.clone(),
@@ -164,7 +170,7 @@ pub fn judge(
         .iter()
         .zip(&noise[1..])
         .map(|(track, noise)| {
-            let observed = observe(times_s, track, noise.window_s);
+            let observed = observe(times_s, track, noise.window_s, jittery(noise));
             let states = observed_states(track, &observed);
             times_s
                 .iter()
@@ -200,7 +206,7 @@ fn noise_of(times_s: &[f64], track: &RecordedTrack, parameters: &ObservedParamet
         .position_noise_m
         .or_else(|| position_noise_m(times_s, &track.positions_m))
         .unwrap_or(0.0);
-    let speeds: Vec<f64> = observe(times_s, track, parameters.window_s)
+    let speeds: Vec<f64> = observe(times_s, track, parameters.window_s, false)
         .iter()
         .map(|over| over.speed_mps)
         .collect();
@@ -225,21 +231,28 @@ fn above_noise(parameters: &ObservedParameters, noise: &TrackNoise) -> ObservedP
 }
 
 /// The observed course and speed over ground of a track. Before the start
-/// the vessel is taken to have been in steady motion: for a closed-loop run's
-/// exact track with recorded courses, on its first course at its first
-/// step's speed; for a track recorded at sea or of positions only, at the
-/// velocity of its first window (a first course or step of such a track is
-/// jitter as much as motion; decision 31) ([`over_ground_from`]).
-fn observe(times_s: &[f64], track: &RecordedTrack, window_s: f64) -> Vec<OverGround> {
+/// the vessel is taken to have been in steady motion: with recorded
+/// courses, on its first course, at its first step's speed, or for a track
+/// whose jitter lengthened its window (`jittery`), at its first window's
+/// mean speed (its first step is jitter as much as motion; decision 31); for a
+/// track of positions only, at the velocity of its first window
+/// ([`over_ground_from`]).
+fn observe(
+    times_s: &[f64],
+    track: &RecordedTrack,
+    window_s: f64,
+    jittery: bool,
+) -> Vec<OverGround> {
+    let first_window = first_window_velocity_mps(times_s, &track.positions_m, window_s);
     let before_start_mps = match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
-        (Some(courses), [t0, t1, ..], [p0, p1, ..])
-            if track.observation.position_noise_m.is_none() =>
-        {
-            courses.first().map(|course| {
-                vorrt_geometry::angle::velocity(*course, p0.distance(*p1) / (t1 - t0))
-            })
-        }
-        _ => first_window_velocity_mps(times_s, &track.positions_m, window_s),
+        (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses.first().map(|course| {
+            let speed_mps = match first_window {
+                Some(velocity) if jittery => velocity.length(),
+                _ => p0.distance(*p1) / (t1 - t0),
+            };
+            vorrt_geometry::angle::velocity(*course, speed_mps)
+        }),
+        _ => first_window,
     };
     over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
 }
