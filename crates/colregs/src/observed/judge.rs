@@ -206,7 +206,10 @@ fn noise_of(times_s: &[f64], track: &RecordedTrack, parameters: &ObservedParamet
         .position_noise_m
         .or_else(|| position_noise_m(times_s, &track.positions_m))
         .unwrap_or(0.0);
-    let speeds: Vec<f64> = observe(times_s, track, parameters.window_s, false)
+    // Speeds over the longest window: over a short one, jitter adds speed
+    // to a slow vessel and so would lower its course jitter.
+    let longest_s = parameters.noise.max_window_s.max(parameters.window_s);
+    let speeds: Vec<f64> = observe(times_s, track, longest_s, false)
         .iter()
         .map(|over| over.speed_mps)
         .collect();

@@ -160,6 +160,8 @@ mod noise_tests;
 mod observe;
 mod parameters;
 mod quality;
+#[cfg(test)]
+mod real_tests;
 mod recording;
 mod status;
 #[cfg(test)]

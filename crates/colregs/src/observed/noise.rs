@@ -57,8 +57,10 @@ pub struct TrackNoise {
     /// The estimated position jitter of the fixes (1 σ), metres
     /// ([`position_noise_m`]); 0 for exact tracks.
     pub position_noise_m: f64,
-    /// The speed the course jitter is judged at: the median observed speed
-    /// over ground of the samples where the vessel made way, m/s.
+    /// The speed the course jitter is judged at: the median speed over
+    /// ground, observed over the longest window
+    /// ([`max_window_s`](NoiseParameters::max_window_s), where jitter adds
+    /// least), of the samples where the vessel made way, m/s.
     pub typical_speed_mps: f64,
     /// The observation window used for this track, seconds: the judgement's
     /// window, lengthened where the jitter calls for it.
