@@ -14,6 +14,10 @@ const MAD_TO_SIGMA: f64 = 1.482_6;
 /// deviation is measured, seconds.
 const BASELINE_S: f64 = 60.0;
 
+/// The largest sum of squared interpolation weights a fix is measured with:
+/// beyond, its neighbours are too unevenly spaced to place it.
+const MAX_SPREAD: f64 = 100.0;
+
 /// Speeds below this are a vessel not making way: its course over ground is
 /// no course (m/s; 0.5 kn).
 const MAKING_WAY_MPS: f64 = 0.257;
@@ -77,17 +81,18 @@ pub struct TrackNoise {
 }
 
 /// The position jitter (1 σ, metres) of a track's fixes, robustly: for each
-/// fix between two others, its distance from the chord of its neighbours
-/// (the straight line between them, at its time), across the track's
-/// direction over a minute either side, scaled to one fix's noise
-/// (the variance of that distance is `σ² (1 + (1 - f)² + f²)`, `f` the
-/// fix's fraction of the neighbours' interval), and the median of their
-/// absolute values over 0.6745 (the MAD of a normal), raised by
-/// `1 + 3 / √n` for `n` deviations (an upper estimate, about three standard
-/// errors above: the MAD of a few dozen fixes is itself uncertain). Across the chord
-/// only, so that a change of speed is not taken for noise. A steady turn adds
-/// its sagitta and so raises the estimate: the judgement then grows more
-/// lenient, never stricter. `None` with fewer than three fixes.
+/// fix, its distance from where its neighbours put it: the cubic through the
+/// two fixes either side, at its time (with fewer than five fixes, the chord
+/// of the one either side), so that a steady turn or a change of speed is
+/// motion, not noise. Measured across the track's direction over a minute
+/// either side, and scaled to one fix's noise (the variance of that distance
+/// is `σ² (1 + Σ wₖ²)`, `wₖ` the interpolation's weights); the median of
+/// their absolute values over 0.6745 (the MAD of a normal, robust to the
+/// tail and to the odd sharp turn), raised by `1 + 3 / √n` for `n`
+/// deviations (an upper estimate, about three standard errors above: the MAD
+/// of a few dozen fixes is itself uncertain). Turns sharper than the fixes
+/// resolve still add to it: the judgement then grows more lenient, never
+/// stricter. `None` with fewer than three fixes.
 ///
 /// ```
 /// use vorrt_colregs::observed::position_noise_m;
@@ -100,39 +105,65 @@ pub struct TrackNoise {
 ///     .map(|(i, t)| DVec2::new(if i % 2 == 0 { 0.0 } else { 4.0 }, 5.0 * t))
 ///     .collect();
 /// let noise = position_noise_m(&times, &fixes).unwrap();
-/// assert!(noise > 3.0 && noise < 8.0, "{noise}");
-/// let straight: Vec<DVec2> = times.iter().map(|t| DVec2::new(0.0, 5.0 * t)).collect();
-/// assert!(position_noise_m(&times, &straight).unwrap() < 1e-9);
+/// assert!(noise > 3.0 && noise < 10.0, "{noise}");
+/// // A steady turn (1°/s at 5 m/s) is no jitter.
+/// let turn: Vec<DVec2> = times
+///     .iter()
+///     .map(|t| {
+///         let radius = 5.0 / 1f64.to_radians();
+///         let angle = (1.0 * t).to_radians();
+///         DVec2::new(radius * (1.0 - angle.cos()), radius * angle.sin())
+///     })
+///     .collect();
+/// assert!(position_noise_m(&times, &turn).unwrap() < 0.5);
 /// ```
 #[must_use]
 pub fn position_noise_m(times_s: &[f64], positions_m: &[DVec2]) -> Option<f64> {
     let count = times_s.len().min(positions_m.len());
     let (times_s, positions_m) = (&times_s[..count], &positions_m[..count]);
-    let mut deviations: Vec<f64> = (1..count.saturating_sub(1))
+    let reach = if count >= 5 { 2 } else { 1 };
+    let mut deviations: Vec<f64> = (reach..count.saturating_sub(reach))
         .filter_map(|index| {
-            let (t0, t1, t2) = (times_s[index - 1], times_s[index], times_s[index + 1]);
-            let (p0, p1, p2) = (
-                positions_m[index - 1],
-                positions_m[index],
-                positions_m[index + 1],
-            );
+            let neighbours: Vec<usize> = (index - reach..=index + reach)
+                .filter(|other| *other != index)
+                .collect();
+            let at_s = times_s[index];
+            // Lagrange weights of the neighbours at this fix's time.
+            let weights: Vec<f64> = neighbours
+                .iter()
+                .map(|&k| {
+                    neighbours
+                        .iter()
+                        .filter(|&&m| m != k)
+                        .map(|&m| (at_s - times_s[m]) / (times_s[k] - times_s[m]))
+                        .product::<f64>()
+                })
+                .collect();
+            let spread: f64 = weights.iter().map(|w| w * w).sum();
+            if !(spread.is_finite() && spread <= MAX_SPREAD) {
+                return None;
+            }
+            let predicted = neighbours
+                .iter()
+                .zip(&weights)
+                .fold(DVec2::ZERO, |sum, (&k, w)| sum + positions_m[k] * *w);
             // Across the track's direction over a longer baseline: the
             // chord of two close fixes points as much by their jitter as by
             // the motion.
             let from = times_s
-                .partition_point(|t| *t <= t1 - BASELINE_S)
+                .partition_point(|t| *t <= at_s - BASELINE_S)
                 .saturating_sub(1);
             let to = times_s
-                .partition_point(|t| *t < t1 + BASELINE_S)
+                .partition_point(|t| *t < at_s + BASELINE_S)
                 .min(count - 1);
             let direction = positions_m[to] - positions_m[from];
-            if t2 <= t0 || direction.length() <= 1e-9 {
+            if direction.length() <= 1e-9 {
                 return None;
             }
-            let fraction = ((t1 - t0) / (t2 - t0)).clamp(0.0, 1.0);
-            let across = direction.normalize().perp_dot(p1 - p0.lerp(p2, fraction));
-            let scale = (1.0 + (1.0 - fraction).powi(2) + fraction.powi(2)).sqrt();
-            Some((across / scale).abs())
+            let across = direction
+                .normalize()
+                .perp_dot(positions_m[index] - predicted);
+            Some((across / (1.0 + spread).sqrt()).abs())
         })
         .filter(|deviation| deviation.is_finite())
         .collect();
