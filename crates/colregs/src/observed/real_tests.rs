@@ -7,7 +7,7 @@ use glam::DVec2;
 /// Ownship north at 6 m/s from the origin for `duration_s`, and a target
 /// meeting it head-on (or lying still 6 km ahead when `at_rest`).
 fn recording(duration_s: f64, status: Option<NavigationalStatus>, at_rest: bool) -> Recording {
-    let times_s: Vec<f64> = (0..)
+    let times_s: Vec<f64> = (0..1000)
         .map(|i| f64::from(i) * 10.0)
         .take_while(|t| *t <= duration_s)
         .collect();
