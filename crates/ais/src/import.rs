@@ -169,6 +169,23 @@ fn spec(track: &VesselTrack, state: &StateEstimate, notes: &mut Vec<String>) -> 
     vessel
 }
 
+/// The error for an ownship MMSI not in `log`, naming the first ten seen.
+fn unknown_mmsi(log: &AisLog, options: &ImportOptions) -> AisError {
+    let mut seen: Vec<String> = log.vessels.keys().take(10).map(u32::to_string).collect();
+    if log.vessels.len() > 10 {
+        seen.push("...".into());
+    }
+    AisError::UnknownMmsi {
+        log: options.log_name.clone(),
+        mmsi: options.ownship_mmsi,
+        seen: if seen.is_empty() {
+            "none".into()
+        } else {
+            seen.join(", ")
+        },
+    }
+}
+
 /// Builds the geographic scenario of `log`: ownship and every vessel within
 /// the range at the chosen time, each dead-reckoned ([`estimate`]); targets
 /// hold their course and speed. The scenario is validated as `vorrt check`
@@ -189,19 +206,7 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         problem,
     })?;
     let Some(own_track) = log.vessels.get(&options.ownship_mmsi) else {
-        let mut seen: Vec<String> = log.vessels.keys().take(10).map(u32::to_string).collect();
-        if log.vessels.len() > 10 {
-            seen.push("...".into());
-        }
-        return Err(AisError::UnknownMmsi {
-            log: options.log_name.clone(),
-            mmsi: options.ownship_mmsi,
-            seen: if seen.is_empty() {
-                "none".into()
-            } else {
-                seen.join(", ")
-            },
-        });
+        return Err(unknown_mmsi(log, options));
     };
     let at_unix_s = options.at_unix_s.or(log.last_time_unix_s);
     let mut notes: Vec<String> = at_unix_s

@@ -323,13 +323,9 @@ pub(crate) fn rebuild(
     let own = ownship_index(list, options, scenario.as_ref(), &mut assumptions)?;
     let frame = frame_for(list, own, scenario.as_ref(), options)?;
     let order = target_order(list, own, scenario.as_ref());
-    let (own_prepared, prepared, jumps) = observation::prepare(
-        list,
-        own,
-        &order,
-        frame.as_ref(),
-        (&file, options.max_speed_kn),
-    )?;
+    let speed = (file.as_str(), options.max_speed_kn);
+    let (own_prepared, prepared, jumps) =
+        observation::prepare(list, own, &order, frame.as_ref(), speed)?;
     let (span, kept) = interval(&own_prepared, &prepared, &mut left_out);
     let targets: Vec<&(usize, Prepared)> = prepared
         .iter()
@@ -358,17 +354,8 @@ pub(crate) fn rebuild(
         options,
         &mut assumptions,
     );
-    let (observations, observed): (Vec<_>, Vec<_>) = judged_indexes
-        .iter()
-        .zip(&vessels)
-        .map(|(index, vessel)| {
-            observation::observe(
-                &list[*index],
-                vessel,
-                jumps.get(index).copied().unwrap_or(0),
-            )
-        })
-        .unzip();
+    let (observations, observed) =
+        observation::observe_all(list, &judged_indexes, &vessels, &jumps);
     let own_length_known = inputs[0].length_from != "default";
     let judged = Judged {
         tracks: judged_tracks,

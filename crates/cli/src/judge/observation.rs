@@ -206,6 +206,27 @@ pub(crate) fn observe(
     (observation, output)
 }
 
+/// [`observe`] for every judged vessel (`judged`: indexes into `list`, in
+/// the order of `vessels`), with the jumps rejected per track index.
+pub(crate) fn observe_all(
+    list: &[Track],
+    judged: &[usize],
+    vessels: &[&Prepared],
+    jumps: &std::collections::HashMap<usize, usize>,
+) -> (Vec<TrackObservation>, Vec<VesselObservation>) {
+    judged
+        .iter()
+        .zip(vessels)
+        .map(|(index, vessel)| {
+            observe(
+                &list[*index],
+                vessel,
+                jumps.get(index).copied().unwrap_or(0),
+            )
+        })
+        .unzip()
+}
+
 /// Ownship's rate-of-turn limit, radians per second, and what was assumed:
 /// the one given (`--max-turn-rate-deg-s`, or the scenario's); else, for a known length, a turn
 /// of [`TURN_RADIUS_LENGTHS`] at its largest speed on the clock; else none:
