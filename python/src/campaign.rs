@@ -60,7 +60,7 @@ fn generate(
 #[pyo3(signature = (
     text, scenario = None, *, source = "<tracks>", ownship = None, d_th_m = None,
     step_s = None, max_gap_s = None, goal_tolerance_m = None, length_m = None,
-    max_turn_rate_deg_s = None
+    max_turn_rate_deg_s = None, max_speed_kn = None
 ))]
 #[expect(
     clippy::too_many_arguments,
@@ -78,6 +78,7 @@ fn judge_csv(
     goal_tolerance_m: Option<f64>,
     length_m: Option<f64>,
     max_turn_rate_deg_s: Option<f64>,
+    max_speed_kn: Option<f64>,
 ) -> PyResult<String> {
     let defaults = JudgeOptions::default();
     let options = JudgeOptions {
@@ -88,6 +89,7 @@ fn judge_csv(
         goal_tolerance_m: goal_tolerance_m.unwrap_or(defaults.goal_tolerance_m),
         length_m: length_m.unwrap_or(defaults.length_m),
         max_turn_rate_deg_s,
+        max_speed_kn: max_speed_kn.unwrap_or(defaults.max_speed_kn),
     };
     for (name, value) in [
         ("max_gap_s", Some(options.max_gap_s)),
@@ -96,6 +98,7 @@ fn judge_csv(
         ("d_th_m", options.d_th_m),
         ("step_s", options.step_s),
         ("max_turn_rate_deg_s", options.max_turn_rate_deg_s),
+        ("max_speed_kn", Some(options.max_speed_kn)),
     ] {
         if let Some(value) = value
             && !(value.is_finite() && value > 0.0)

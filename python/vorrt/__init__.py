@@ -98,6 +98,7 @@ def judge(
     goal_tolerance_m: Optional[float] = None,
     length_m: Optional[float] = None,
     max_turn_rate_deg_s: Optional[float] = None,
+    max_speed_kn: Optional[float] = None,
 ) -> Judgement:
     """Judges any planner's recorded tracks with the one evaluation, as
     ``vorrt judge --format csv`` does.
@@ -122,5 +123,6 @@ def judge(
             goal_tolerance_m=goal_tolerance_m,
             length_m=length_m,
             max_turn_rate_deg_s=max_turn_rate_deg_s,
+            max_speed_kn=max_speed_kn,
         )
     )

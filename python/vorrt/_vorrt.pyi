@@ -129,6 +129,7 @@ def judge_csv(
     goal_tolerance_m: Optional[float] = None,
     length_m: Optional[float] = None,
     max_turn_rate_deg_s: Optional[float] = None,
+    max_speed_kn: Optional[float] = None,
 ) -> str:
     """``judgement.json`` (without the final line end) of ``vorrt judge``
     for tracks in the CSV of ``trajectory.csv``; ``vorrt.judge`` takes a

@@ -43,9 +43,13 @@ pub struct JudgeOptions {
     pub goal_tolerance_m: f64,
     /// Length of a vessel neither the scenario nor the tracks give, metres.
     pub length_m: f64,
-    /// Ownship's rate-of-turn limit, degrees per second; `None`: the
-    /// planner's.
+    /// Ownship's rate-of-turn limit, degrees per second; `None`: a turn of
+    /// radius one length where its length is known, else the rate is
+    /// reported, not judged.
     pub max_turn_rate_deg_s: Option<f64>,
+    /// A fix farther from the vessel's last than this speed allows is a
+    /// jump, rejected, knots (`--max-speed-kn`).
+    pub max_speed_kn: f64,
 }
 
 impl Default for JudgeOptions {
@@ -58,6 +62,7 @@ impl Default for JudgeOptions {
             goal_tolerance_m: judge::DEFAULT_GOAL_TOLERANCE_M,
             length_m: vorrt_ais::DEFAULT_LENGTH_M,
             max_turn_rate_deg_s: None,
+            max_speed_kn: judge::DEFAULT_MAX_SPEED_KN,
         }
     }
 }
@@ -85,6 +90,7 @@ pub fn judge_csv(
         goal_tolerance_m: options.goal_tolerance_m,
         default_length_m: options.length_m,
         max_turn_rate_deg_s: options.max_turn_rate_deg_s,
+        max_speed_kn: options.max_speed_kn,
     };
     let (_, _, judgement) = judge::judge_text(text, TracksFormat::Csv, scenario, &options)
         .map_err(|error| error.to_string())?;

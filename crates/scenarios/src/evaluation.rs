@@ -31,13 +31,18 @@ use crate::scenario::Scenario;
 use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::observed::{
-    ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack, Recording, judge,
+    NavigationalStatus, ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack,
+    Recording, TrackNoise, judge,
 };
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
 };
 
 /// How ownship fared against one target.
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "a plain record of documented outcome flags"
+)]
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct TargetEvaluation {
     /// The target's name.
@@ -78,6 +83,15 @@ pub struct TargetEvaluation {
     /// The full assessment on the observed states (`None` when no
     /// encounter arose).
     pub assessment: Option<EncounterAssessment>,
+    /// The navigational status the target reported (tracks recorded at
+    /// sea); at anchor, moored or aground it was judged as a stationary
+    /// obstacle, on clearance alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub status: Option<NavigationalStatus>,
+    /// The encounter was unfinished when the tracks ended (still closing at
+    /// the last sample): its clearance and passing are not a verdict.
+    #[serde(default)]
+    pub undecided: bool,
 }
 
 /// How a whole run fared.
@@ -161,6 +175,10 @@ pub struct Evaluation {
     pub planning_time_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetEvaluation>,
+    /// Every track's jitter and the window and turn thresholds it was judged
+    /// with, ownship first (exact tracks: no jitter, the published values).
+    #[serde(default)]
+    pub noise: Vec<TrackNoise>,
 }
 
 impl Evaluation {
@@ -337,6 +355,10 @@ pub fn evaluate_with(
         ..ObservedParameters::default()
     };
     let judgement = judge(&recording_of(scenario, record), &parameters);
+    let noise = judgement
+        .as_ref()
+        .map(|judgement| judgement.noise.clone())
+        .unwrap_or_default();
     let (targets, path, track_findings, compliant) = match &judgement {
         Ok(judgement) => (
             judgement.targets.iter().map(target_evaluation).collect(),
@@ -410,6 +432,7 @@ pub fn evaluate_with(
         rule_departures: record.rule_departures(),
         planning_time_s: record.planning_time_s(),
         targets,
+        noise,
     }
 }
 
@@ -434,11 +457,15 @@ pub fn observed_judgement(
 /// The recorded tracks of a run, as the observed judgement reads them:
 /// positions and recorded courses of every vessel on the run's time base.
 fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
-    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64| RecordedTrack {
-        name: name.to_owned(),
-        length_m: states.first().map_or(length_m, |state| state.length_m),
-        positions_m: states.iter().map(|state| state.position_m).collect(),
-        courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+    let observation = |index: usize| record.observations.get(index).copied().unwrap_or_default();
+    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64, index: usize| {
+        RecordedTrack {
+            name: name.to_owned(),
+            length_m: states.first().map_or(length_m, |state| state.length_m),
+            positions_m: states.iter().map(|state| state.position_m).collect(),
+            courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+            observation: observation(index),
+        }
     };
     Recording {
         times_s: record.times_s.clone(),
@@ -446,6 +473,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             &scenario.ownship.name,
             &record.ownship,
             scenario.ownship.length_m,
+            0,
         ),
         targets: record
             .targets
@@ -454,7 +482,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             .map(|(index, states)| {
                 let name = record.target_names.get(index).map_or("", String::as_str);
                 let length_m = scenario.targets.get(index).map_or(1.0, |t| t.length_m);
-                track(name, states, length_m)
+                track(name, states, length_m, index + 1)
             })
             .collect(),
     }
@@ -481,5 +509,7 @@ fn target_evaluation(observed: &ObservedEncounter) -> TargetEvaluation {
         max_alteration_deg: assessment.map(|a| a.max_course_change_rad.to_degrees()),
         score: observed.score,
         assessment: assessment.cloned(),
+        status: observed.status,
+        undecided: observed.undecided,
     }
 }

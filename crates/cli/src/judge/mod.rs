@@ -10,6 +10,8 @@
 
 pub(crate) mod build;
 pub(crate) mod formats;
+pub(crate) mod observation;
+pub(crate) use observation::DEFAULT_MAX_SPEED_KN;
 pub(crate) mod output;
 pub(crate) mod resample;
 pub(crate) mod tracks;
@@ -93,10 +95,15 @@ pub(crate) struct JudgeArgs {
     /// Length of a vessel neither the scenario nor the tracks give, metres.
     #[arg(long, value_name = "M", default_value_t = vorrt_ais::DEFAULT_LENGTH_M)]
     pub(crate) length_m: f64,
-    /// Ownship's rate-of-turn limit, degrees per second [default: the
-    /// planner's, from ownship's length and speed].
+    /// Ownship's rate-of-turn limit, degrees per second [default: a turn
+    /// of radius one length at its largest speed, where its length is known;
+    /// else the rate is reported, not judged].
     #[arg(long, value_name = "DEG_S")]
     pub(crate) max_turn_rate_deg_s: Option<f64>,
+    /// A fix farther from the vessel's last than this speed allows is a
+    /// jump, rejected, knots.
+    #[arg(long, value_name = "KN", default_value_t = observation::DEFAULT_MAX_SPEED_KN)]
+    pub(crate) max_speed_kn: f64,
 }
 
 /// The format of `path`: the one given, else by extension, else by content.
@@ -175,6 +182,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         ("d-th", args.d_th),
         ("step-s", args.step_s),
         ("max-turn-rate-deg-s", args.max_turn_rate_deg_s),
+        ("max-speed-kn", Some(args.max_speed_kn)),
     ] {
         if let Some(value) = value {
             positive(name, value)?;
@@ -195,6 +203,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         goal_tolerance_m: args.goal_tolerance_m,
         default_length_m: args.length_m,
         max_turn_rate_deg_s: args.max_turn_rate_deg_s,
+        max_speed_kn: args.max_speed_kn,
     };
     let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, &options)?;
     let dir = args.out.clone().unwrap_or_else(|| {

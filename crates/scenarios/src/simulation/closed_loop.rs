@@ -332,6 +332,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             plans_kept: Vec::new(),
             config: *config,
             max_turn_rate_rad_s,
+            observations: Vec::new(),
             reached_goal: false,
             arrival_time_s: None,
         };

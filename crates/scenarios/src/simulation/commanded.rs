@@ -104,6 +104,7 @@ impl CommandedRun {
                 .max_turn_rate_rad_s(own.length_m, own.speed_mps),
             reached_goal: false,
             arrival_time_s: None,
+            observations: Vec::new(),
         };
         let mut run = Self {
             // The one place a configuration becomes the model ownship
