@@ -228,6 +228,8 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         planner: PlannerSettings::default(),
         simulation: SimulationSettings::default(),
         lanes: Vec::new(),
+        separation_zones: Vec::new(),
+        rule10: vorrt_scenarios::Rule10Settings::default(),
         seed: None,
         start_time,
         source: format!("{} (imported)", options.log_name),

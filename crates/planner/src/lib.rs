@@ -3,6 +3,7 @@
 
 pub mod config;
 pub mod constraint;
+pub mod crossing;
 pub mod error;
 pub mod evasion;
 pub mod plan;
@@ -10,6 +11,7 @@ pub mod problem;
 mod replay;
 pub mod safety;
 pub mod sampler;
+pub mod scheme;
 pub mod simplify;
 mod tree;
 pub mod validity;

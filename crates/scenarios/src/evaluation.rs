@@ -32,6 +32,7 @@ use serde::{Deserialize, Serialize};
 use vorrt_colregs::observed::{
     ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack, Recording, judge,
 };
+use vorrt_colregs::rule10::{Rule10Judgement, judge_track};
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
 };
@@ -143,6 +144,17 @@ pub struct Evaluation {
     pub planning_time_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetEvaluation>,
+    /// Rule 10 (traffic separation schemes) on ownship's track as sailed,
+    /// its heading at every sample (the rule speaks of heading): the lane
+    /// crossings and the findings; empty without lanes and zones. A finding
+    /// makes the run not `compliant`.
+    #[serde(default)]
+    pub rule10: Rule10Judgement,
+    /// The same on the track as observed: course over ground over the
+    /// observation window, as another vessel sees it (reported, not part
+    /// of `compliant`: the COG lags a turn made just short of a lane).
+    #[serde(default)]
+    pub rule10_observed: Rule10Judgement,
 }
 
 impl Evaluation {
@@ -231,6 +243,26 @@ impl Evaluation {
                 format!(" | {}", self.track_findings.join("; "))
             },
         );
+        if !(self.rule10.crossings.is_empty() && self.rule10.is_clean()) {
+            let worst = self
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| crossing.max_off_perpendicular_deg)
+                .fold(0.0, f64::max);
+            let findings: Vec<String> = self.rule10.findings.iter().map(ToString::to_string).collect();
+            let _ = writeln!(
+                text,
+                "rule 10: {} lane crossings, {} square (worst {worst:.1}° off perpendicular) | {}",
+                self.rule10.crossings.len(),
+                self.rule10.square_crossings(),
+                if findings.is_empty() {
+                    "no finding".to_owned()
+                } else {
+                    findings.join("; ")
+                },
+            );
+        }
         text
     }
 }
@@ -288,7 +320,9 @@ pub fn evaluate_with(
         scoring: scoring_for(clearance_m),
         ..ObservedParameters::default()
     };
-    let judgement = judge(&recording_of(scenario, record), &parameters);
+    let recording = recording_of(scenario, record);
+    let judgement = judge(&recording, &parameters);
+    let (rule10, rule10_observed) = judge_rule10(scenario, &recording, judgement.as_ref().ok());
     let (targets, path, track_findings, compliant) = match &judgement {
         Ok(judgement) => (
             judgement.targets.iter().map(target_evaluation).collect(),
@@ -335,7 +369,7 @@ pub fn evaluate_with(
             .map(|target| target.min_distance_m)
             .fold(f64::INFINITY, f64::min),
         clearance_kept: targets.iter().all(|target| target.clearance_kept),
-        compliant,
+        compliant: compliant && rule10.is_clean(),
         max_turn_rate_deg_s: path.map_or(0.0, |path| path.max_turn_rate_deg_s),
         turn_rate_limit_deg_s: record.max_turn_rate_rad_s.map(f64::to_degrees),
         turn_reversals: path.map_or(0, |path| path.turn_reversals),
@@ -353,7 +387,32 @@ pub fn evaluate_with(
         rule_departures: record.rule_departures(),
         planning_time_s: record.planning_time_s(),
         targets,
+        rule10,
+        rule10_observed,
     }
+}
+
+/// Rule 10 on ownship's track, as sailed (the recorded headings; the
+/// course over ground where the recording has none) and as observed,
+/// against the scenario's scheme.
+fn judge_rule10(
+    scenario: &Scenario,
+    recording: &Recording,
+    judgement: Option<&ObservedJudgement>,
+) -> (Rule10Judgement, Rule10Judgement) {
+    let scheme = scenario.traffic_scheme();
+    if scheme.is_empty() {
+        return (Rule10Judgement::default(), Rule10Judgement::default());
+    }
+    let observed: Vec<f64> = judgement.map_or_else(Vec::new, |judgement| {
+        judgement.ownship.iter().map(|over| over.course_rad).collect()
+    });
+    let own = &recording.ownship;
+    let sailed = own.courses_rad.as_ref().unwrap_or(&observed);
+    (
+        judge_track(&scheme, &recording.times_s, &own.positions_m, sailed),
+        judge_track(&scheme, &recording.times_s, &own.positions_m, &observed),
+    )
 }
 
 /// The observed judgement of a run, for callers that want more than the

@@ -11,6 +11,7 @@ pub mod geo;
 pub mod io;
 pub mod planner_settings;
 pub mod scenario;
+pub mod scheme;
 pub mod simulation;
 pub mod validate;
 
@@ -30,6 +31,7 @@ pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
+pub use scheme::{Rule10Settings, SeparationZoneSpec, scenario_constraint};
 pub use simulation::{
     ClosedLoop, Decision, LoopState, PlanCheck, PlanEvent, PlanTrigger, RecordedMotion,
     RecordedMotionError, RunStatus, SimulationRecord, StepOutcome, TargetMotion, TimedState,

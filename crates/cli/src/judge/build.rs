@@ -572,6 +572,8 @@ fn synthesized_scenario(
         planner: PlannerSettings::default(),
         simulation: SimulationSettings::default(),
         lanes: Vec::new(),
+        separation_zones: Vec::new(),
+        rule10: vorrt_scenarios::Rule10Settings::default(),
         seed: None,
         start_time,
         source: format!("{file} (scenario synthesized by vorrt judge)"),

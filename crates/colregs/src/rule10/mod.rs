@@ -282,31 +282,66 @@ impl Scheme {
         self.lanes.is_empty() && self.zones.is_empty()
     }
 
+    /// How a vessel bound from `start_m` to `goal_m` uses each lane, in
+    /// lane order: [`LaneUse::Following`] a lane its start or goal lies
+    /// in (it joins, leaves or sails along it), [`LaneUse::Crossing`] every
+    /// other (it has no business in it but to cross: 10(c)).
+    ///
+    /// ```
+    /// use vorrt_colregs::rule10::{LaneUse, Scheme, TrafficLane};
+    /// use glam::DVec2;
+    /// let lane = TrafficLane { from_m: DVec2::new(5000.0, 0.0), to_m: DVec2::new(-5000.0, 0.0), width_m: 1000.0 };
+    /// let scheme = Scheme { lanes: vec![lane], ..Scheme::default() };
+    /// assert_eq!(scheme.lane_uses(DVec2::new(0.0, -3000.0), DVec2::new(0.0, 3000.0)), [LaneUse::Crossing]);
+    /// assert_eq!(scheme.lane_uses(DVec2::new(0.0, -3000.0), DVec2::new(-4000.0, 0.0)), [LaneUse::Following]);
+    /// ```
+    #[must_use]
+    pub fn lane_uses(&self, start_m: DVec2, goal_m: DVec2) -> Vec<LaneUse> {
+        self.lanes
+            .iter()
+            .map(|lane| {
+                if lane.contains_m(start_m) || lane.contains_m(goal_m) {
+                    LaneUse::Following
+                } else {
+                    LaneUse::Crossing
+                }
+            })
+            .collect()
+    }
+
     /// The verdict on ownship sailing `course_rad` along the segment from
-    /// `start_m` to `end_m` (within `margin_m` of it): in a lane the heading
-    /// must be with the flow or square across it, in a zone square across
-    /// its axis (module documentation).
+    /// `start_m` to `end_m` (within `margin_m` of it), using the lanes as
+    /// `uses` says ([`Scheme::lane_uses`]; a lane it does not name is
+    /// crossed): in a lane it crosses the heading must be square across
+    /// the flow (10(c)), in one it follows with the flow or square across
+    /// it (10(b)(i), (iii)); in a zone square across its axis (10(e)).
     ///
     /// # Errors
     /// The first [`SchemeBreach`]: lanes in order, then zones.
     ///
     /// ```
-    /// use vorrt_colregs::rule10::{Scheme, TrafficLane, SchemeBreach, LaneHeading};
+    /// use vorrt_colregs::rule10::{LaneHeading, LaneUse, Scheme, SchemeBreach, TrafficLane};
     /// use glam::DVec2;
     /// let scheme = Scheme {
     ///     lanes: vec![TrafficLane { from_m: DVec2::new(5000.0, 0.0), to_m: DVec2::new(-5000.0, 0.0), width_m: 1852.0 }],
     ///     ..Scheme::default()
     /// };
     /// let (a, b) = (DVec2::new(0.0, -100.0), DVec2::new(0.0, 100.0));
-    /// assert!(scheme.check_segment(a, b, 0.0, 0.0).is_ok());
+    /// let crossing = [LaneUse::Crossing];
+    /// assert!(scheme.check_segment(&crossing, a, b, 0.0, 0.0).is_ok());
     /// let north_east = 45f64.to_radians();
     /// assert_eq!(
-    ///     scheme.check_segment(a, b, 0.0, north_east),
+    ///     scheme.check_segment(&crossing, a, b, 0.0, north_east),
     ///     Err(SchemeBreach::LaneHeading { lane: 0, heading: LaneHeading::Oblique })
     /// );
+    /// // West-north-west, with the flow: a lane followed allows it, a lane crossed does not.
+    /// let shallow = 290f64.to_radians();
+    /// assert!(scheme.check_segment(&[LaneUse::Following], a, b, 0.0, shallow).is_ok());
+    /// assert!(scheme.check_segment(&crossing, a, b, 0.0, shallow).is_err());
     /// ```
     pub fn check_segment(
         &self,
+        uses: &[LaneUse],
         start_m: DVec2,
         end_m: DVec2,
         margin_m: f64,
@@ -314,7 +349,12 @@ impl Scheme {
     ) -> Result<(), SchemeBreach> {
         for (index, lane) in self.lanes.iter().enumerate() {
             let heading = LaneHeading::of(lane.flow_course_rad(), course_rad, &self.parameters);
-            let allowed = matches!(heading, LaneHeading::WithFlow | LaneHeading::Crossing);
+            let allowed = match uses.get(index).copied().unwrap_or(LaneUse::Crossing) {
+                LaneUse::Crossing => heading == LaneHeading::Crossing,
+                LaneUse::Following => {
+                    matches!(heading, LaneHeading::WithFlow | LaneHeading::Crossing)
+                }
+            };
             if !allowed && lane.touches_segment(start_m, end_m, margin_m) {
                 return Err(SchemeBreach::LaneHeading {
                     lane: index,
@@ -331,6 +371,16 @@ impl Scheme {
         }
         Ok(())
     }
+}
+
+/// How a vessel uses a lane, for the planner ([`Scheme::lane_uses`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LaneUse {
+    /// It crosses the lane: only a square heading inside it (10(c)).
+    Crossing,
+    /// It joins, leaves or follows the lane: with the flow, or square across.
+    Following,
 }
 
 /// Whether `point_m` is inside `polygon` (crossing number; the boundary may

@@ -105,9 +105,14 @@ fn crossing_a_zone_square_is_clean_and_sailing_in_it_is_a_10e_finding() {
     let (t, p, c) = straight(DVec2::new(-3000.0, 0.0), 90.0, 100);
     let judgement = judge_track(&scheme, &t, &p, &c);
     assert_eq!(judgement.count(Rule10Clause::SeparationZone), 1);
+    let uses = scheme.lane_uses(DVec2::new(0.0, -2000.0), DVec2::new(0.0, 2000.0));
+    assert_eq!(uses, [LaneUse::Crossing, LaneUse::Crossing]);
     assert!(scheme
-        .check_segment(DVec2::new(0.0, 0.0), DVec2::new(100.0, 0.0), 0.0, 90f64.to_radians())
+        .check_segment(&uses, DVec2::new(0.0, 0.0), DVec2::new(100.0, 0.0), 0.0, 90f64.to_radians())
         .is_err());
+    assert!(scheme
+        .check_segment(&uses, DVec2::new(0.0, -50.0), DVec2::new(0.0, 50.0), 0.0, 0.0)
+        .is_ok());
 }
 
 #[test]
@@ -115,25 +120,41 @@ fn the_planner_check_refuses_oblique_and_against_flow_headings_in_a_lane_only() 
     let scheme = one_lane();
     let inside = (DVec2::new(0.0, -100.0), DVec2::new(50.0, 0.0));
     let outside = (DVec2::new(0.0, -3000.0), DVec2::new(50.0, -2900.0));
-    for (course_deg, ok) in [(0.0, true), (14.0, true), (20.0, false), (90.0, false), (260.0, true), (180.0, true)] {
+    let crossing = [LaneUse::Crossing];
+    let following = [LaneUse::Following];
+    for (course_deg, crossed, followed) in [
+        (0.0, true, true),
+        (14.0, true, true),
+        (20.0, false, false),
+        (90.0, false, false),
+        (260.0, false, true),
+        (180.0, true, true),
+    ] {
         let course = f64::to_radians(course_deg);
         assert_eq!(
-            scheme.check_segment(inside.0, inside.1, 0.0, course).is_ok(),
-            ok,
-            "{course_deg}°"
+            scheme.check_segment(&crossing, inside.0, inside.1, 0.0, course).is_ok(),
+            crossed,
+            "{course_deg}° crossing"
         );
-        assert!(scheme.check_segment(outside.0, outside.1, 0.0, course).is_ok());
+        assert_eq!(
+            scheme.check_segment(&following, inside.0, inside.1, 0.0, course).is_ok(),
+            followed,
+            "{course_deg}° following"
+        );
+        assert!(scheme.check_segment(&crossing, outside.0, outside.1, 0.0, course).is_ok());
     }
     // A margin reaches into the lane from just outside it.
     let edge = (DVec2::new(0.0, -960.0), DVec2::new(50.0, -960.0));
     let east = 90f64.to_radians();
-    assert!(scheme.check_segment(edge.0, edge.1, 0.0, east).is_ok());
-    assert!(scheme.check_segment(edge.0, edge.1, 50.0, east).is_err());
+    assert!(scheme.check_segment(&crossing, edge.0, edge.1, 0.0, east).is_ok());
+    assert!(scheme.check_segment(&crossing, edge.0, edge.1, 50.0, east).is_err());
     // A segment passing right through the lane, both ends outside.
     assert!(scheme
-        .check_segment(DVec2::new(0.0, -2000.0), DVec2::new(2000.0, 2000.0), 0.0, 0.46)
+        .check_segment(&crossing, DVec2::new(0.0, -2000.0), DVec2::new(2000.0, 2000.0), 0.0, 0.46)
         .is_err());
-    assert!(Scheme::default().check_segment(inside.0, inside.1, 0.0, east).is_ok());
+    assert!(Scheme::default().check_segment(&[], inside.0, inside.1, 0.0, east).is_ok());
+    // A lane the uses do not name is crossed.
+    assert!(scheme.check_segment(&[], inside.0, inside.1, 0.0, east).is_err());
 }
 
 #[test]

@@ -299,6 +299,8 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
         planner: planner_for_route(route_m, None),
         simulation: SimulationSettings::default(),
         lanes: Vec::new(),
+        separation_zones: Vec::new(),
+        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated open-sea seed {seed} index {index}>"),

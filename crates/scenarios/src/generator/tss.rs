@@ -3,6 +3,7 @@
 use super::random::{behaviour_stream, round_to, run_seed, scenario_stream, uniform, uniform_in};
 use super::{GeneratorError, OWNSHIP_LENGTH_M, TargetBehaviour, check_range, planner_for_route};
 use crate::scenario::{Lane, Scenario, SimulationSettings, VesselSpec};
+use crate::scheme::SeparationZoneSpec;
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::units;
 
@@ -15,8 +16,9 @@ pub enum TssDirection {
     Westbound,
     /// One lane, traffic flowing east (course 090).
     Eastbound,
-    /// Two lanes with a separation zone between them: eastbound to the south,
-    /// westbound to the north (each flow keeps the zone on its port side).
+    /// Two lanes with a separation zone between them (the scenario's
+    /// `separation_zones`): eastbound to the south, westbound to the north
+    /// (each flow keeps the zone on its port side).
     TwoWay,
 }
 
@@ -129,12 +131,7 @@ fn tss_lanes(spec: &TssSpec, half_length_nm: f64) -> Vec<(Lane, f64)> {
             (-half_length_nm, half_length_nm)
         };
         (
-            Lane {
-                name: name.into(),
-                from_nm: (from, centre),
-                to_nm: (to, centre),
-                width_nm: spec.lane_width_nm,
-            },
+            Lane::new_nm(name, (from, centre), (to, centre), spec.lane_width_nm),
             if westward { 270.0 } else { 90.0 },
         )
     };
@@ -190,7 +187,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     let stretches: Vec<(f64, f64)> = lanes_unsized
         .iter()
         .map(|(lane, _)| {
-            let centre = lane.from_nm.1;
+            let centre = lane.from_nm.map_or(0.0, |(_, north)| north);
             let enter_h = own_hours(centre - 0.5 * spec.lane_width_nm) - 5.0 / 60.0;
             let leave_h = own_hours(centre + 0.5 * spec.lane_width_nm) + 5.0 / 60.0;
             (slowest * enter_h.max(0.0), fastest * leave_h)
@@ -203,10 +200,25 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         .ceil()
         + 2.0;
     let lanes = tss_lanes(spec, far_nm);
+    // Two lanes: the strip between them is the separation zone (rule 10(e)).
+    let half_zone_nm = 0.5 * spec.separation_zone_nm;
+    let separation_zones = if spec.direction == TssDirection::TwoWay && half_zone_nm > 0.0 {
+        vec![SeparationZoneSpec::new_nm(
+            "separation zone",
+            vec![
+                (-far_nm, -half_zone_nm),
+                (far_nm, -half_zone_nm),
+                (far_nm, half_zone_nm),
+                (-far_nm, half_zone_nm),
+            ],
+        )]
+    } else {
+        Vec::new()
+    };
     let mut targets = Vec::new();
     for ((lane, course_deg), (near, far)) in lanes.iter().zip(&stretches) {
         let count = target_count(spec.targets_per_nm, far - near);
-        let centre = lane.from_nm.1;
+        let centre = lane.from_nm.map_or(0.0, |(_, north)| north);
         #[expect(clippy::float_cmp, reason = "courses are the literals 90 and 270")]
         let westward = *course_deg == 270.0;
         let half = (0.5 * spec.lane_width_nm - 0.05).max(0.0);
@@ -256,6 +268,8 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         planner: planner_for_route(route_m, Some(100.0)),
         simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
+        separation_zones,
+        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
