@@ -16,11 +16,12 @@ use vorrt_geometry::angle;
 use vorrt_jfs::{MotionModel, Pose};
 
 /// The speeds a crossing slows to, as fractions of the service speed,
-/// fastest first: from an adjustment that lets the next lane vessel pass
-/// ahead (three quarters) to holding short of the lane at steerage way
-/// (three tenths; stopping is the evasive fallback's). The search's own
-/// 0.45 (`simplify::SPEED_FACTORS`) is among them.
-pub const CROSSING_SPEED_FACTORS: [f64; 4] = [0.75, 0.6, 0.45, 0.3];
+/// fastest first: the manoeuvre search's readily apparent reduction (0.45,
+/// `simplify::SPEED_FACTORS`: at least halved, rules 8(b), 16), then
+/// holding short of the lane at steerage way (three tenths; stopping is the
+/// evasive fallback's). Milder reductions (0.75, 0.6) were judged not
+/// readily apparent where they began before risk arose (decision 30).
+pub const CROSSING_SPEED_FACTORS: [f64; 2] = [0.45, 0.3];
 
 /// From `start` with `state` in force, the first manoeuvre "head for the
 /// goal at a fraction of the service speed ([`CROSSING_SPEED_FACTORS`],
@@ -43,11 +44,11 @@ pub const CROSSING_SPEED_FACTORS: [f64; 4] = [0.75, 0.6, 0.45, 0.3];
 ///         if leg.speed_mps > 4.0 && leg.start_m.y < 1000.0 { Err(RejectionCause::Clearance) } else { Ok(()) }
 ///     }
 /// }
-/// let model = RateLimitedTurn::new(0.05);
+/// let model = RateLimitedTurn { turn_radius_m: 300.0 };
 /// let start = Pose { position_m: DVec2::ZERO, course_rad: 0.0 };
 /// let legs = speed_on_course(&model, &Gap, start, Speeds::constant(6.0), DVec2::new(0.0, 5000.0), &EncounterState::default()).unwrap();
 /// assert_eq!(legs.len(), 2);
-/// assert!((legs[0].leg.speed_mps - 0.6 * 6.0).abs() < 1e-9);
+/// assert!((legs[0].leg.speed_mps - 0.45 * 6.0).abs() < 1e-9);
 /// assert!(legs[1].leg.start_m.y >= 1000.0);
 /// ```
 pub fn speed_on_course<M: MotionModel, V: MotionValidator>(
@@ -120,7 +121,7 @@ mod tests {
 
     #[test]
     fn the_fastest_shortest_crossing_wins_and_none_is_found_where_nothing_is_valid() {
-        let model = RateLimitedTurn::new(0.05);
+        let model = RateLimitedTurn { turn_radius_m: 300.0 };
         let start = Pose {
             position_m: DVec2::ZERO,
             course_rad: 0.3,
@@ -130,9 +131,9 @@ mod tests {
         let speeds = Speeds::constant(6.0);
         assert!(speed_on_course(&model, &Never, start, speeds, goal_m, &state).is_none());
         let legs = speed_on_course(&model, &Always, start, speeds, goal_m, &state).expect("valid");
-        // Turned onto the goal's bearing, at three quarters, for the shortest hold.
+        // Turned onto the goal's bearing, at 45 %, for the shortest hold.
         assert!(legs[0].leg.course_rad.abs() < 1e-12);
-        assert!((legs[0].leg.speed_mps - 4.5).abs() < 1e-12);
+        assert!((legs[0].leg.speed_mps - 2.7).abs() < 1e-12);
         assert!((legs.last().expect("legs").leg.end_m() - goal_m).length() < 1e-6);
     }
 }

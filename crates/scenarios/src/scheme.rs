@@ -22,7 +22,7 @@ use vorrt_planner::scheme::SchemeConstraint;
 /// `SeparationZone(...)` in RON): exactly one of `vertices_nm`,
 /// `vertices_m` (local scenarios) and `vertices_lat_lon` (geographic ones).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, rename = "SeparationZone")]
 pub struct SeparationZoneSpec {
     /// Name, e.g. `"central"`.
     pub name: String,

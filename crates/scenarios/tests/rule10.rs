@@ -2,7 +2,8 @@
 //! sees it (decision 30).
 
 use vorrt_scenarios::colregs::rule10::Rule10Clause;
-use vorrt_scenarios::{TargetBehaviour, TssDirection, TssSpec, evaluate, fixtures, simulate, tss};
+use vorrt_scenarios::generator::tss;
+use vorrt_scenarios::{TargetBehaviour, TssDirection, TssSpec, evaluate, fixtures, simulate};
 
 /// Generated crossings per direction: a few in a debug run, more with
 /// `VORRT_HEAVY_TESTS=1`.
