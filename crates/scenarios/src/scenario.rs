@@ -134,7 +134,6 @@ impl Scenario {
             }
             None => None,
         };
-        crate::scheme::check_scheme(self, frame.as_ref())?;
         project_vessel(&mut self.ownship, "ownship", frame.as_ref())?;
         for (index, target) in self.targets.iter_mut().enumerate() {
             let who = format!("targets[{index}] {:?}", target.name);

@@ -127,6 +127,10 @@ impl Scenario {
         // Long ships can touch beyond the clearance.
         self.check_hulls_apart().map_err(|(f, p)| invalid(f, p))?;
         self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
+        // The scheme last: its lanes and zones are projected with the frame
+        // the vessels were (decision 30).
+        let frame = self.local_frame();
+        crate::scheme::check_scheme(self, frame.as_ref()).map_err(|(f, p)| invalid(f, p))?;
         for (index, lane) in self.lanes.iter().enumerate() {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
         }

@@ -193,7 +193,8 @@ impl Gen {
                 )
             })
             .collect();
-        let separation_zones = (0..self.below_usize(2))
+        let zones = if self.chance(20) { self.below_usize(2) } else { 0 };
+        let separation_zones = (0..zones)
             .map(|index| {
                 let vertices = (0..self.below_usize(5))
                     .map(|_| (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)))
@@ -223,7 +224,11 @@ impl Gen {
             lanes,
             separation_zones,
             rule10: Rule10Settings {
-                crossing_tolerance_deg: self.opt(-10.0, 60.0),
+                crossing_tolerance_deg: if self.chance(10) {
+                    self.opt(-10.0, 60.0)
+                } else {
+                    None
+                },
                 flow_tolerance_deg: None,
             },
             seed: Some(self.0.next_u64()),

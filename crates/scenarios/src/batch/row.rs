@@ -103,9 +103,9 @@ pub struct BatchRow {
     #[serde(default)]
     pub lane_crossings_square: usize,
     /// The largest angle of the heading from perpendicular to the flow in
-    /// any crossing, degrees (not a number without a crossing).
-    #[serde(default = "not_recorded")]
-    pub crossing_off_perpendicular_deg: f64,
+    /// any crossing, degrees (empty without a crossing).
+    #[serde(default)]
+    pub crossing_off_perpendicular_deg: Option<f64>,
     /// Stretches inside a separation zone other than crossing it (10(e)).
     #[serde(default)]
     pub separation_zone_entries: usize,
@@ -181,7 +181,7 @@ impl BatchRow {
             time_overhead_pct: f64::NAN,
             lane_crossings: 0,
             lane_crossings_square: 0,
-            crossing_off_perpendicular_deg: f64::NAN,
+            crossing_off_perpendicular_deg: None,
             separation_zone_entries: 0,
             rule10_findings: String::new(),
         }
@@ -260,8 +260,7 @@ impl BatchRow {
                 .crossings
                 .iter()
                 .map(|crossing| crossing.max_off_perpendicular_deg)
-                .reduce(f64::max)
-                .unwrap_or(f64::NAN),
+                .reduce(f64::max),
             separation_zone_entries: evaluation.rule10.count(Rule10Clause::SeparationZone),
             rule10_findings: evaluation
                 .rule10

@@ -231,7 +231,7 @@ impl BatchSummary {
                     / lane_crossings as f64
             }),
             crossing_off_perpendicular_deg: Percentiles::of(
-                ran.iter().map(|row| row.crossing_off_perpendicular_deg),
+                ran.iter().filter_map(|row| row.crossing_off_perpendicular_deg),
             ),
             runs_with_separation_zone_entry: ran
                 .iter()
