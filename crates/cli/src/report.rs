@@ -154,7 +154,11 @@ impl Rule10Report {
             text,
             "rule 10:        {} lane crossings, {square} square (worst {worst:.1}° off perpendicular); {}",
             self.crossings.len(),
-            if self.clean { "no finding" } else { "findings:" }
+            if self.clean {
+                "no finding"
+            } else {
+                "findings:"
+            }
         );
         for finding in &self.findings {
             let _ = writeln!(text, "                - {finding}");

@@ -121,7 +121,9 @@ mod tests {
 
     #[test]
     fn the_fastest_shortest_crossing_wins_and_none_is_found_where_nothing_is_valid() {
-        let model = RateLimitedTurn { turn_radius_m: 300.0 };
+        let model = RateLimitedTurn {
+            turn_radius_m: 300.0,
+        };
         let start = Pose {
             position_m: DVec2::ZERO,
             course_rad: 0.3,

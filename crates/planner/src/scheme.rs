@@ -126,7 +126,11 @@ mod tests {
             Err(ConstraintViolation::TrafficLane)
         );
         assert!(constraint.admits_point(DVec2::ZERO));
-        assert!(SchemeConstraint::default().check_segment(&segment(45.0)).is_ok());
+        assert!(
+            SchemeConstraint::default()
+                .check_segment(&segment(45.0))
+                .is_ok()
+        );
         assert_eq!(constraint.scheme().lanes.len(), 1);
     }
 }

@@ -250,7 +250,12 @@ impl Evaluation {
                 .iter()
                 .map(|crossing| crossing.max_off_perpendicular_deg)
                 .fold(0.0, f64::max);
-            let findings: Vec<String> = self.rule10.findings.iter().map(ToString::to_string).collect();
+            let findings: Vec<String> = self
+                .rule10
+                .findings
+                .iter()
+                .map(ToString::to_string)
+                .collect();
             let _ = writeln!(
                 text,
                 "rule 10: {} lane crossings, {} square (worst {worst:.1}° off perpendicular) | {}",
@@ -405,7 +410,11 @@ fn judge_rule10(
         return (Rule10Judgement::default(), Rule10Judgement::default());
     }
     let observed: Vec<f64> = judgement.map_or_else(Vec::new, |judgement| {
-        judgement.ownship.iter().map(|over| over.course_rad).collect()
+        judgement
+            .ownship
+            .iter()
+            .map(|over| over.course_rad)
+            .collect()
     });
     let own = &recording.ownship;
     let sailed = own.courses_rad.as_ref().unwrap_or(&observed);

@@ -208,9 +208,9 @@ pub(crate) fn check_scheme(
         ] {
             let position = match (frame, nautical, geographic) {
                 (None, Some(_), None) => None,
-                (Some(frame), None, Some(lat_lon)) => {
-                    Some(project(frame, lat_lon).map_err(|p| (field(&format!("{end}_lat_lon")), p))?)
-                }
+                (Some(frame), None, Some(lat_lon)) => Some(
+                    project(frame, lat_lon).map_err(|p| (field(&format!("{end}_lat_lon")), p))?,
+                ),
                 (None, _, Some(_)) => {
                     return Err((
                         field(&format!("{end}_lat_lon")),
@@ -239,7 +239,10 @@ pub(crate) fn check_scheme(
         check_zone(index, zone, frame)?;
     }
     for (name, value) in [
-        ("crossing_tolerance_deg", scenario.rule10.crossing_tolerance_deg),
+        (
+            "crossing_tolerance_deg",
+            scenario.rule10.crossing_tolerance_deg,
+        ),
         ("flow_tolerance_deg", scenario.rule10.flow_tolerance_deg),
     ] {
         if let Some(value) = value
@@ -298,7 +301,10 @@ fn check_zone(
             ));
         }
         [_, second, ..] => {
-            return Err((field(second), "is given twice: give one vertex field".into()));
+            return Err((
+                field(second),
+                "is given twice: give one vertex field".into(),
+            ));
         }
     };
     match (name, frame) {
@@ -344,7 +350,9 @@ fn check_zone(
             project(frame, vertex).map_err(bad)?
         } else {
             if vertex.0.hypot(vertex.1) * scale_to_nm > MAX_EXTENT_NM {
-                return Err(bad(format!("is more than {MAX_EXTENT_NM} nm from the origin")));
+                return Err(bad(format!(
+                    "is more than {MAX_EXTENT_NM} nm from the origin"
+                )));
             }
             if name == "vertices_nm" {
                 nm(vertex.0, vertex.1)
@@ -363,7 +371,11 @@ fn check_zone(
             "encloses no area: its vertices lie on one line".into(),
         ));
     }
-    zone.projected_m = if frame.is_some() { vertices_m } else { Vec::new() };
+    zone.projected_m = if frame.is_some() {
+        vertices_m
+    } else {
+        Vec::new()
+    };
     Ok(())
 }
 

@@ -460,8 +460,7 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
 fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
     let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
     check_name(&lane.name).map_err(|problem| (field("name"), problem))?;
-    check_position(Who::Ownship, "", lane.from_nm, 1.0)
-        .map_err(|(_, p)| (field("from_nm"), p))?;
+    check_position(Who::Ownship, "", lane.from_nm, 1.0).map_err(|(_, p)| (field("from_nm"), p))?;
     check_position(Who::Ownship, "", lane.to_nm, 1.0).map_err(|(_, p)| (field("to_nm"), p))?;
     if !(lane.width_nm.is_finite() && lane.width_nm > 0.0 && lane.width_nm <= MAX_EXTENT_NM) {
         return Err((
@@ -474,7 +473,11 @@ fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
     }
     // Ends were projected (geographic) or checked above by now.
     if lane.from_m() == lane.to_m() {
-        let name = if lane.to_nm.is_some() { "to_nm" } else { "to_lat_lon" };
+        let name = if lane.to_nm.is_some() {
+            "to_nm"
+        } else {
+            "to_lat_lon"
+        };
         return Err((
             field(name),
             "is the same point as the lane's other end: a lane needs a direction".into(),

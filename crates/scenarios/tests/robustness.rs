@@ -193,7 +193,11 @@ impl Gen {
                 )
             })
             .collect();
-        let zones = if self.chance(20) { self.below_usize(2) } else { 0 };
+        let zones = if self.chance(20) {
+            self.below_usize(2)
+        } else {
+            0
+        };
         let separation_zones = (0..zones)
             .map(|index| {
                 let vertices = (0..self.below_usize(5))

@@ -17,11 +17,19 @@ fn cases() -> u64 {
 
 #[test]
 fn the_paper_tss_crossing_is_square_and_safe() {
-    let scenario = fixtures::find("paper/tss").expect("bundled").load().expect("valid");
+    let scenario = fixtures::find("paper/tss")
+        .expect("bundled")
+        .load()
+        .expect("valid");
     let record = simulate(&scenario, scenario.seed.unwrap_or(1)).expect("runs");
     let evaluation = evaluate(&scenario, &record);
     assert!(evaluation.success(), "{}", evaluation.table());
-    assert_eq!(evaluation.rule10.crossings.len(), 1, "{}", evaluation.table());
+    assert_eq!(
+        evaluation.rule10.crossings.len(),
+        1,
+        "{}",
+        evaluation.table()
+    );
     assert!(evaluation.rule10.is_clean(), "{}", evaluation.table());
 }
 
@@ -32,7 +40,11 @@ fn generated_crossings_keep_the_heading_rule_and_stay_out_of_the_zone() {
             direction,
             ..TssSpec::with_density(1.0).with_behaviour(TargetBehaviour::Constant)
         };
-        let lanes = if direction == TssDirection::TwoWay { 2 } else { 1 };
+        let lanes = if direction == TssDirection::TwoWay {
+            2
+        } else {
+            1
+        };
         for index in 0..cases() {
             let scenario = tss(&spec, 7, index).expect("generates");
             let record = simulate(&scenario, scenario.seed.unwrap_or(1)).expect("runs");
@@ -40,10 +52,24 @@ fn generated_crossings_keep_the_heading_rule_and_stay_out_of_the_zone() {
             let table = evaluation.table();
             assert!(!evaluation.collision, "{}: {table}", scenario.name);
             if evaluation.reached_goal {
-                assert_eq!(evaluation.rule10.crossings.len(), lanes, "{}: {table}", scenario.name);
+                assert_eq!(
+                    evaluation.rule10.crossings.len(),
+                    lanes,
+                    "{}: {table}",
+                    scenario.name
+                );
             }
-            for clause in [Rule10Clause::CrossingNotSquare, Rule10Clause::SeparationZone, Rule10Clause::AgainstFlow] {
-                assert_eq!(evaluation.rule10.count(clause), 0, "{}: {table}", scenario.name);
+            for clause in [
+                Rule10Clause::CrossingNotSquare,
+                Rule10Clause::SeparationZone,
+                Rule10Clause::AgainstFlow,
+            ] {
+                assert_eq!(
+                    evaluation.rule10.count(clause),
+                    0,
+                    "{}: {table}",
+                    scenario.name
+                );
             }
         }
     }

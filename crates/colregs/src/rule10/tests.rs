@@ -107,12 +107,28 @@ fn crossing_a_zone_square_is_clean_and_sailing_in_it_is_a_10e_finding() {
     assert_eq!(judgement.count(Rule10Clause::SeparationZone), 1);
     let uses = scheme.lane_uses(DVec2::new(0.0, -2000.0), DVec2::new(0.0, 2000.0));
     assert_eq!(uses, [LaneUse::Crossing, LaneUse::Crossing]);
-    assert!(scheme
-        .check_segment(&uses, DVec2::new(0.0, 0.0), DVec2::new(100.0, 0.0), 0.0, 90f64.to_radians())
-        .is_err());
-    assert!(scheme
-        .check_segment(&uses, DVec2::new(0.0, -50.0), DVec2::new(0.0, 50.0), 0.0, 0.0)
-        .is_ok());
+    assert!(
+        scheme
+            .check_segment(
+                &uses,
+                DVec2::new(0.0, 0.0),
+                DVec2::new(100.0, 0.0),
+                0.0,
+                90f64.to_radians()
+            )
+            .is_err()
+    );
+    assert!(
+        scheme
+            .check_segment(
+                &uses,
+                DVec2::new(0.0, -50.0),
+                DVec2::new(0.0, 50.0),
+                0.0,
+                0.0
+            )
+            .is_ok()
+    );
 }
 
 #[test]
@@ -132,29 +148,61 @@ fn the_planner_check_refuses_oblique_and_against_flow_headings_in_a_lane_only() 
     ] {
         let course = f64::to_radians(course_deg);
         assert_eq!(
-            scheme.check_segment(&crossing, inside.0, inside.1, 0.0, course).is_ok(),
+            scheme
+                .check_segment(&crossing, inside.0, inside.1, 0.0, course)
+                .is_ok(),
             crossed,
             "{course_deg}° crossing"
         );
         assert_eq!(
-            scheme.check_segment(&following, inside.0, inside.1, 0.0, course).is_ok(),
+            scheme
+                .check_segment(&following, inside.0, inside.1, 0.0, course)
+                .is_ok(),
             followed,
             "{course_deg}° following"
         );
-        assert!(scheme.check_segment(&crossing, outside.0, outside.1, 0.0, course).is_ok());
+        assert!(
+            scheme
+                .check_segment(&crossing, outside.0, outside.1, 0.0, course)
+                .is_ok()
+        );
     }
     // A margin reaches into the lane from just outside it.
     let edge = (DVec2::new(0.0, -960.0), DVec2::new(50.0, -960.0));
     let east = 90f64.to_radians();
-    assert!(scheme.check_segment(&crossing, edge.0, edge.1, 0.0, east).is_ok());
-    assert!(scheme.check_segment(&crossing, edge.0, edge.1, 50.0, east).is_err());
+    assert!(
+        scheme
+            .check_segment(&crossing, edge.0, edge.1, 0.0, east)
+            .is_ok()
+    );
+    assert!(
+        scheme
+            .check_segment(&crossing, edge.0, edge.1, 50.0, east)
+            .is_err()
+    );
     // A segment passing right through the lane, both ends outside.
-    assert!(scheme
-        .check_segment(&crossing, DVec2::new(0.0, -2000.0), DVec2::new(2000.0, 2000.0), 0.0, 0.46)
-        .is_err());
-    assert!(Scheme::default().check_segment(&[], inside.0, inside.1, 0.0, east).is_ok());
+    assert!(
+        scheme
+            .check_segment(
+                &crossing,
+                DVec2::new(0.0, -2000.0),
+                DVec2::new(2000.0, 2000.0),
+                0.0,
+                0.46
+            )
+            .is_err()
+    );
+    assert!(
+        Scheme::default()
+            .check_segment(&[], inside.0, inside.1, 0.0, east)
+            .is_ok()
+    );
     // A lane the uses do not name is crossed.
-    assert!(scheme.check_segment(&[], inside.0, inside.1, 0.0, east).is_err());
+    assert!(
+        scheme
+            .check_segment(&[], inside.0, inside.1, 0.0, east)
+            .is_err()
+    );
 }
 
 #[test]
@@ -166,7 +214,10 @@ fn tolerances_are_validated() {
     };
     assert!(matches!(
         wide.validate(),
-        Err(ColregsError::InvalidParameter { field: "crossing_tolerance_rad", .. })
+        Err(ColregsError::InvalidParameter {
+            field: "crossing_tolerance_rad",
+            ..
+        })
     ));
     let none = Rule10Parameters {
         flow_tolerance_rad: 0.0,

@@ -46,16 +46,12 @@ impl Rule10Clause {
     #[must_use]
     pub fn description(self) -> &'static str {
         match self {
-            Self::CrossingNotSquare => {
-                "rule 10(c): crossed a lane not at right angles to its flow"
-            }
+            Self::CrossingNotSquare => "rule 10(c): crossed a lane not at right angles to its flow",
             Self::AgainstFlow => "rule 10(b)(i): in a lane against its flow",
             Self::JoinOrLeaveAngle => {
                 "rule 10(b)(iii): joined or left a lane at a large angle to its flow"
             }
-            Self::SeparationZone => {
-                "rule 10(e): in a separation zone other than crossing it"
-            }
+            Self::SeparationZone => "rule 10(e): in a separation zone other than crossing it",
         }
     }
 }
@@ -189,8 +185,7 @@ pub fn judge_track(
             let side = |i: usize| lane.lane_coordinates_m(positions_m[i]).1;
             // A visit at either end of the track has no known side to
             // come from or go to: not a crossing.
-            let crossing =
-                first > 0 && last + 1 < count && side(first - 1) * side(last + 1) < 0.0;
+            let crossing = first > 0 && last + 1 < count && side(first - 1) * side(last + 1) < 0.0;
             let visit = first..=last;
             let finding = |clause, samples: &[usize], worst_angle_rad: f64| Rule10Finding {
                 clause,
@@ -228,9 +223,11 @@ pub fn judge_track(
                     let off_square: Vec<usize> = visit
                         .filter(|&i| off(i) > parameters.crossing_tolerance_rad)
                         .collect();
-                    judgement
-                        .findings
-                        .push(finding(Rule10Clause::CrossingNotSquare, &off_square, worst));
+                    judgement.findings.push(finding(
+                        Rule10Clause::CrossingNotSquare,
+                        &off_square,
+                        worst,
+                    ));
                 }
             } else {
                 let oblique: Vec<usize> = visit
@@ -241,9 +238,11 @@ pub fn judge_track(
                         .iter()
                         .map(|&i| angle::signed_turn(flow_rad, courses_rad[i]).abs())
                         .fold(0.0, f64::max);
-                    judgement
-                        .findings
-                        .push(finding(Rule10Clause::JoinOrLeaveAngle, &oblique, worst));
+                    judgement.findings.push(finding(
+                        Rule10Clause::JoinOrLeaveAngle,
+                        &oblique,
+                        worst,
+                    ));
                 }
             }
         }

@@ -21,11 +21,11 @@
 use super::Planner;
 use crate::config::PlannerConfig;
 use crate::constraint::Constraint;
+use crate::crossing::speed_on_course;
 use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::Recording;
 use crate::safety::SafetyChecker;
-use crate::crossing::speed_on_course;
 use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::validity::EncounterState;
 use glam::DVec2;

@@ -227,11 +227,14 @@ impl BatchSummary {
             runs_with_rule_departures: rows.iter().filter(|row| row.rule_departures > 0).count(),
             lane_crossings,
             lane_crossing_square_rate: (lane_crossings > 0).then(|| {
-                ran.iter().map(|row| row.lane_crossings_square).sum::<usize>() as f64
+                ran.iter()
+                    .map(|row| row.lane_crossings_square)
+                    .sum::<usize>() as f64
                     / lane_crossings as f64
             }),
             crossing_off_perpendicular_deg: Percentiles::of(
-                ran.iter().filter_map(|row| row.crossing_off_perpendicular_deg),
+                ran.iter()
+                    .filter_map(|row| row.crossing_off_perpendicular_deg),
             ),
             runs_with_separation_zone_entry: ran
                 .iter()

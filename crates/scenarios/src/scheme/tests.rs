@@ -44,25 +44,46 @@ fn bad_zones_and_tolerances_are_named() {
         "[(-6.0, -0.25), (6.0, -0.25), (6.0, 0.25), (-6.0, 0.25)]",
         "[(-6.0, -0.25), (6.0, -0.25)]",
     );
-    assert_eq!(field_of(&two_vertices), "separation_zones[0] \"central\".vertices_nm");
+    assert_eq!(
+        field_of(&two_vertices),
+        "separation_zones[0] \"central\".vertices_nm"
+    );
     let on_a_line = LOCAL.replace("(6.0, 0.25), (-6.0, 0.25)", "(7.0, -0.25), (8.0, -0.25)");
-    assert_eq!(field_of(&on_a_line), "separation_zones[0] \"central\".vertices_nm");
+    assert_eq!(
+        field_of(&on_a_line),
+        "separation_zones[0] \"central\".vertices_nm"
+    );
     let not_finite = LOCAL.replace("(6.0, 0.25), (-6.0", "(6.0, inf), (-6.0");
-    assert_eq!(field_of(&not_finite), "separation_zones[0] \"central\".vertices_nm[2]");
+    assert_eq!(
+        field_of(&not_finite),
+        "separation_zones[0] \"central\".vertices_nm[2]"
+    );
     let none = LOCAL.replace(
         "vertices_nm: [(-6.0, -0.25), (6.0, -0.25), (6.0, 0.25), (-6.0, 0.25)]",
         "",
     );
-    assert_eq!(field_of(&none), "separation_zones[0] \"central\".vertices_nm");
+    assert_eq!(
+        field_of(&none),
+        "separation_zones[0] \"central\".vertices_nm"
+    );
     let geographic_in_local = LOCAL.replace("vertices_nm:", "vertices_lat_lon:");
-    assert_eq!(field_of(&geographic_in_local), "separation_zones[0] \"central\".vertices_lat_lon");
-    let wide = LOCAL.replace("crossing_tolerance_deg: 10.0", "crossing_tolerance_deg: 60.0");
+    assert_eq!(
+        field_of(&geographic_in_local),
+        "separation_zones[0] \"central\".vertices_lat_lon"
+    );
+    let wide = LOCAL.replace(
+        "crossing_tolerance_deg: 10.0",
+        "crossing_tolerance_deg: 60.0",
+    );
     assert_eq!(field_of(&wide), "rule10.crossing_tolerance_deg");
     let lane_lat_lon = LOCAL.replace(
         "from_nm: (-6.0, -0.75), to_nm",
         "from_lat_lon: (51.0, 1.4), to_nm",
     );
-    assert_eq!(field_of(&lane_lat_lon), "lanes[0] \"eastbound\".from_lat_lon");
+    assert_eq!(
+        field_of(&lane_lat_lon),
+        "lanes[0] \"eastbound\".from_lat_lon"
+    );
     let no_end = LOCAL.replace("from_nm: (-6.0, -0.75), ", "");
     assert_eq!(field_of(&no_end), "lanes[0] \"eastbound\".from_nm");
 }
@@ -84,14 +105,20 @@ fn a_geographic_scheme_is_projected_about_ownships_start() {
     let scheme = scenario.traffic_scheme();
     let lane = scheme.lanes[0];
     // 51.0 N is 0.05° = 3 nm north of the start.
-    assert!((lane.from_m.y / units::NAUTICAL_MILE_M - 3.0).abs() < 0.05, "{lane:?}");
+    assert!(
+        (lane.from_m.y / units::NAUTICAL_MILE_M - 3.0).abs() < 0.05,
+        "{lane:?}"
+    );
     assert!(lane.from_m.x > 0.0 && lane.to_m.x < 0.0);
     assert!((lane.flow_course_rad().to_degrees() - 270.0).abs() < 0.5);
     assert!(scheme.zones[0].contains_m(DVec2::new(0.0, lane.from_m.y - 1500.0)));
     let local_lane = GEOGRAPHIC.replace("from_lat_lon: (51.0, 1.55)", "from_nm: (3.0, 3.0)");
     assert_eq!(field_of(&local_lane), "lanes[0] \"westbound\".from_nm");
     let local_zone = GEOGRAPHIC.replace("vertices_lat_lon:", "vertices_m:");
-    assert_eq!(field_of(&local_zone), "separation_zones[0] \"south\".vertices_m");
+    assert_eq!(
+        field_of(&local_zone),
+        "separation_zones[0] \"south\".vertices_m"
+    );
 }
 
 #[test]

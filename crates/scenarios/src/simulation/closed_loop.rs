@@ -10,14 +10,14 @@ use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::target::{BehaviourTarget, TargetMotion};
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
+use crate::scheme::scenario_constraint;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
-use vorrt_planner::validity::EncounterState;
-use crate::scheme::scenario_constraint;
 use vorrt_planner::scheme::SchemeConstraint;
+use vorrt_planner::validity::EncounterState;
 use vorrt_planner::{Constraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
