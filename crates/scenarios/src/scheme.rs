@@ -9,7 +9,7 @@
 //! is that of the nearest lane (from the zone's centroid to the lane's
 //! centre line), or with no lane the direction of its longest edge.
 
-use crate::geo::{LocalFrame, MAX_GEO_EXTENT_NM, check_lat_lon};
+use crate::geo::{LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions, check_lat_lon};
 use crate::scenario::{Lane, Scenario};
 use crate::validate::MAX_EXTENT_NM;
 use serde::{Deserialize, Serialize};
@@ -201,7 +201,7 @@ pub(crate) fn check_scheme(
 ) -> Result<(), (String, String)> {
     for (index, lane) in scenario.lanes.iter_mut().enumerate() {
         let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
-        lane.projected = Default::default();
+        lane.projected = ProjectedPositions::default();
         for (end, nautical, geographic) in [
             ("from", lane.from_nm, lane.from_lat_lon),
             ("to", lane.to_nm, lane.to_lat_lon),
@@ -397,7 +397,7 @@ impl Lane {
             width_nm,
             from_lat_lon: None,
             to_lat_lon: None,
-            projected: Default::default(),
+            projected: ProjectedPositions::default(),
         }
     }
 }

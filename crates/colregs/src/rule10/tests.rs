@@ -18,7 +18,9 @@ fn one_lane() -> Scheme {
 /// A straight track from `start_m` on `course_deg` at 6 m/s, sampled every 5 s for `count` samples.
 fn straight(start_m: DVec2, course_deg: f64, count: usize) -> (Vec<f64>, Vec<DVec2>, Vec<f64>) {
     let course = course_deg.to_radians();
-    let times: Vec<f64> = (0..count).map(|i| 5.0 * i as f64).collect();
+    let times: Vec<f64> = std::iter::successors(Some(0.0), |t| Some(t + 5.0))
+        .take(count)
+        .collect();
     let positions = times
         .iter()
         .map(|t| start_m + angle::velocity(course, 6.0) * *t)

@@ -157,6 +157,24 @@ fn target_count(per_nm: f64, length_nm: f64) -> usize {
     ((per_nm * length_nm).round() as usize).max(1)
 }
 
+/// The separation zone of a two-way scheme: the strip between its lanes,
+/// `far_nm` each side of the crossing line (rule 10(e)); none for one lane.
+fn separation_zones(spec: &TssSpec, far_nm: f64) -> Vec<SeparationZoneSpec> {
+    let half_zone_nm = 0.5 * spec.separation_zone_nm;
+    if spec.direction != TssDirection::TwoWay || half_zone_nm <= 0.0 {
+        return Vec::new();
+    }
+    vec![SeparationZoneSpec::new_nm(
+        "separation zone",
+        vec![
+            (-far_nm, -half_zone_nm),
+            (far_nm, -half_zone_nm),
+            (far_nm, half_zone_nm),
+            (-far_nm, half_zone_nm),
+        ],
+    )]
+}
+
 /// Scenario `index` of a TSS batch seeded with `seed` (see [`TssSpec`]); the
 /// planner's clearance is 100 m, the paper's in a scheme. Validated.
 ///
@@ -200,21 +218,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         .ceil()
         + 2.0;
     let lanes = tss_lanes(spec, far_nm);
-    // Two lanes: the strip between them is the separation zone (rule 10(e)).
-    let half_zone_nm = 0.5 * spec.separation_zone_nm;
-    let separation_zones = if spec.direction == TssDirection::TwoWay && half_zone_nm > 0.0 {
-        vec![SeparationZoneSpec::new_nm(
-            "separation zone",
-            vec![
-                (-far_nm, -half_zone_nm),
-                (far_nm, -half_zone_nm),
-                (far_nm, half_zone_nm),
-                (-far_nm, half_zone_nm),
-            ],
-        )]
-    } else {
-        Vec::new()
-    };
+    let separation_zones = separation_zones(spec, far_nm);
     let mut targets = Vec::new();
     for ((lane, course_deg), (near, far)) in lanes.iter().zip(&stretches) {
         let count = target_count(spec.targets_per_nm, far - near);
