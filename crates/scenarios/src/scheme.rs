@@ -283,45 +283,7 @@ fn check_zone(
     if zone.name.trim().is_empty() {
         return Err((field("name"), "is empty".into()));
     }
-    let given: Vec<&str> = [
-        ("vertices_nm", zone.vertices_nm.is_some()),
-        ("vertices_m", zone.vertices_m.is_some()),
-        ("vertices_lat_lon", zone.vertices_lat_lon.is_some()),
-    ]
-    .iter()
-    .filter(|(_, given)| *given)
-    .map(|(name, _)| *name)
-    .collect();
-    let name = match given.as_slice() {
-        [one] => *one,
-        [] => {
-            return Err((
-                field("vertices_nm"),
-                "is missing: give vertices_nm, vertices_m or vertices_lat_lon".into(),
-            ));
-        }
-        [_, second, ..] => {
-            return Err((
-                field(second),
-                "is given twice: give one vertex field".into(),
-            ));
-        }
-    };
-    match (name, frame) {
-        ("vertices_lat_lon", None) => {
-            return Err((
-                field(name),
-                "is given in a local scenario: use vertices_nm or vertices_m".into(),
-            ));
-        }
-        ("vertices_nm" | "vertices_m", Some(_)) => {
-            return Err((
-                field(name),
-                "is given in a geographic scenario: use vertices_lat_lon".into(),
-            ));
-        }
-        _ => {}
-    }
+    let name = zone_field(zone, frame).map_err(|(name, problem)| (field(name), problem))?;
     let raw = zone
         .vertices_nm
         .as_ref()
@@ -377,6 +339,51 @@ fn check_zone(
         Vec::new()
     };
     Ok(())
+}
+
+/// The one vertex field a zone gives, right for the scenario's frame, or
+/// the field at fault and what is wrong.
+fn zone_field(
+    zone: &SeparationZoneSpec,
+    frame: Option<&LocalFrame>,
+) -> Result<&'static str, (&'static str, String)> {
+    let given: Vec<&'static str> = [
+        ("vertices_nm", zone.vertices_nm.is_some()),
+        ("vertices_m", zone.vertices_m.is_some()),
+        ("vertices_lat_lon", zone.vertices_lat_lon.is_some()),
+    ]
+    .iter()
+    .filter(|(_, given)| *given)
+    .map(|(name, _)| *name)
+    .collect();
+    let name = match given.as_slice() {
+        [one] => *one,
+        [] => {
+            return Err((
+                "vertices_nm",
+                "is missing: give vertices_nm, vertices_m or vertices_lat_lon".into(),
+            ));
+        }
+        [_, second, ..] => {
+            return Err((second, "is given twice: give one vertex field".into()));
+        }
+    };
+    match (name, frame) {
+        ("vertices_lat_lon", None) => {
+            return Err((
+                name,
+                "is given in a local scenario: use vertices_nm or vertices_m".into(),
+            ));
+        }
+        ("vertices_nm" | "vertices_m", Some(_)) => {
+            return Err((
+                name,
+                "is given in a geographic scenario: use vertices_lat_lon".into(),
+            ));
+        }
+        _ => {}
+    }
+    Ok(name)
 }
 
 /// The lane helpers of a validated scenario, geographic ends included.

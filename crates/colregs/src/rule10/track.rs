@@ -247,6 +247,21 @@ pub fn judge_track(
             }
         }
     }
+    judge_zones(scheme, times_s, positions_m, courses_rad, &mut judgement);
+    judgement
+}
+
+/// The 10(e) findings: each run of samples inside a zone with a heading
+/// not square across its axis.
+fn judge_zones(
+    scheme: &Scheme,
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    courses_rad: &[f64],
+    judgement: &mut Rule10Judgement,
+) {
+    let count = times_s.len();
+    let parameters = &scheme.parameters;
     for (index, zone) in scheme.zones.iter().enumerate() {
         let off = |i: usize| off_perpendicular_rad(zone.axis_course_rad, courses_rad[i]);
         for (first, last) in runs(count, |i| zone.contains_m(positions_m[i])) {
@@ -268,7 +283,6 @@ pub fn judge_track(
             }
         }
     }
-    judgement
 }
 
 /// The maximal runs `(first, last)` of indices below `count` where `inside` holds.

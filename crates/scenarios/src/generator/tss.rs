@@ -218,7 +218,6 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         .ceil()
         + 2.0;
     let lanes = tss_lanes(spec, far_nm);
-    let separation_zones = separation_zones(spec, far_nm);
     let mut targets = Vec::new();
     for ((lane, course_deg), (near, far)) in lanes.iter().zip(&stretches) {
         let count = target_count(spec.targets_per_nm, far - near);
@@ -272,7 +271,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         planner: planner_for_route(route_m, Some(100.0)),
         simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
-        separation_zones,
+        separation_zones: separation_zones(spec, far_nm),
         rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
         start_time: None,
