@@ -91,6 +91,9 @@ pub(crate) fn summary_table(report: &Report) -> String {
     let _ = writeln!(text, "collision:      {}", yes_no(report.collision));
     report.write_safety_lines(&mut text);
     report.write_overhead_lines(&mut text);
+    if let Some(rule10) = &report.rule10 {
+        rule10.write_lines(&mut text);
+    }
     let _ = writeln!(text, "planner:        {}", planner_calls(report));
     text
 }
@@ -163,7 +166,9 @@ fn plan_command(
         .planner_config()
         .map_err(|error| CliError::BadInput(error.to_string()))?;
     let d_th_m = config.clearance_m;
-    let mut planner = Planner::new(config)
+    // The scenario's traffic separation scheme, as the closed loop keeps it.
+    let constraint = vorrt_scenarios::scenario_constraint(&scenario);
+    let mut planner = Planner::with_constraint(config, constraint)
         .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
     let outcome = {
         let _ticker = Ticker::start(format!("planning {}", scenario.source));

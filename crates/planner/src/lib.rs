@@ -3,6 +3,7 @@
 
 pub mod config;
 pub mod constraint;
+pub mod crossing;
 pub mod error;
 pub mod evasion;
 pub mod land;
@@ -11,6 +12,7 @@ pub mod problem;
 mod replay;
 pub mod safety;
 pub mod sampler;
+pub mod scheme;
 pub mod simplify;
 mod tree;
 pub mod validity;

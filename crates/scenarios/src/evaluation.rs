@@ -34,6 +34,7 @@ use vorrt_colregs::observed::{
     NavigationalStatus, ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack,
     Recording, TrackNoise, judge,
 };
+use vorrt_colregs::rule10::{Rule10Judgement, judge_track};
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
 };
@@ -179,6 +180,17 @@ pub struct Evaluation {
     /// with, ownship first (exact tracks: no jitter, the published values).
     #[serde(default)]
     pub noise: Vec<TrackNoise>,
+    /// Rule 10 (traffic separation schemes) on ownship's track as sailed,
+    /// its heading at every sample (the rule speaks of heading): the lane
+    /// crossings and the findings; empty without lanes and zones. A finding
+    /// makes the run not `compliant`.
+    #[serde(default)]
+    pub rule10: Rule10Judgement,
+    /// The same on the track as observed: course over ground over the
+    /// observation window, as another vessel sees it (reported, not part
+    /// of `compliant`: the COG lags a turn made just short of a lane).
+    #[serde(default)]
+    pub rule10_observed: Rule10Judgement,
 }
 
 impl Evaluation {
@@ -291,6 +303,31 @@ impl Evaluation {
                 format!(" | {}", self.track_findings.join("; "))
             },
         );
+        if !(self.rule10.crossings.is_empty() && self.rule10.is_clean()) {
+            let worst = self
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| crossing.max_off_perpendicular_deg)
+                .fold(0.0, f64::max);
+            let findings: Vec<String> = self
+                .rule10
+                .findings
+                .iter()
+                .map(ToString::to_string)
+                .collect();
+            let _ = writeln!(
+                text,
+                "rule 10: {} lane crossings, {} square (worst {worst:.1}° off perpendicular) | {}",
+                self.rule10.crossings.len(),
+                self.rule10.square_crossings(),
+                if findings.is_empty() {
+                    "no finding".to_owned()
+                } else {
+                    findings.join("; ")
+                },
+            );
+        }
         text
     }
 }
@@ -354,11 +391,13 @@ pub fn evaluate_with(
         scoring: scoring_for(clearance_m),
         ..ObservedParameters::default()
     };
-    let judgement = judge(&recording_of(scenario, record), &parameters);
+    let recording = recording_of(scenario, record);
+    let judgement = judge(&recording, &parameters);
     let noise = judgement
         .as_ref()
         .map(|judgement| judgement.noise.clone())
         .unwrap_or_default();
+    let (rule10, rule10_observed) = judge_rule10(scenario, &recording, judgement.as_ref().ok());
     let (targets, path, track_findings, compliant) = match &judgement {
         Ok(judgement) => (
             judgement.targets.iter().map(target_evaluation).collect(),
@@ -414,7 +453,7 @@ pub fn evaluate_with(
         land_clearance_m: land.map(|land| land.clearance_m),
         grounding: land.is_some_and(|land| land.grounding),
         land_clearance_kept: land.is_none_or(|land| land.clearance_kept),
-        compliant,
+        compliant: compliant && rule10.is_clean(),
         max_turn_rate_deg_s: path.map_or(0.0, |path| path.max_turn_rate_deg_s),
         turn_rate_limit_deg_s: record.max_turn_rate_rad_s.map(f64::to_degrees),
         turn_reversals: path.map_or(0, |path| path.turn_reversals),
@@ -433,7 +472,36 @@ pub fn evaluate_with(
         planning_time_s: record.planning_time_s(),
         targets,
         noise,
+        rule10,
+        rule10_observed,
     }
+}
+
+/// Rule 10 on ownship's track, as sailed (the recorded headings; the
+/// course over ground where the recording has none) and as observed,
+/// against the scenario's scheme.
+fn judge_rule10(
+    scenario: &Scenario,
+    recording: &Recording,
+    judgement: Option<&ObservedJudgement>,
+) -> (Rule10Judgement, Rule10Judgement) {
+    let scheme = scenario.traffic_scheme();
+    if scheme.is_empty() {
+        return (Rule10Judgement::default(), Rule10Judgement::default());
+    }
+    let observed: Vec<f64> = judgement.map_or_else(Vec::new, |judgement| {
+        judgement
+            .ownship
+            .iter()
+            .map(|over| over.course_rad)
+            .collect()
+    });
+    let own = &recording.ownship;
+    let sailed = own.courses_rad.as_ref().unwrap_or(&observed);
+    (
+        judge_track(&scheme, &recording.times_s, &own.positions_m, sailed),
+        judge_track(&scheme, &recording.times_s, &own.positions_m, &observed),
+    )
 }
 
 /// The observed judgement of a run, for callers that want more than the

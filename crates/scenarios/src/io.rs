@@ -318,12 +318,15 @@ mod tests {
                 max_duration_s: Some(3600.0),
                 replan_deviation_m: 25.0,
             },
-            lanes: vec![Lane {
-                name: "north".into(),
-                from_nm: (0.0, -5.0),
-                to_nm: (0.1, 5.0),
-                width_nm: 0.75,
-            }],
+            lanes: vec![Lane::new_nm("north", (0.0, -5.0), (0.1, 5.0), 0.75)],
+            separation_zones: vec![crate::scheme::SeparationZoneSpec::new_nm(
+                "west of it",
+                vec![(-1.0, -5.0), (-0.5, -5.0), (-0.5, 5.0), (-1.0, 5.0)],
+            )],
+            rule10: crate::scheme::Rule10Settings {
+                crossing_tolerance_deg: Some(10.0),
+                flow_tolerance_deg: None,
+            },
             land: Vec::new(),
             no_go: Vec::new(),
             land_geojson: None,
@@ -432,8 +435,18 @@ mod tests {
         scenario.lanes.clear();
         scenario.description = None;
         scenario.seed = None;
+        scenario.separation_zones.clear();
+        scenario.rule10 = crate::scheme::Rule10Settings::default();
         let text = scenario.to_ron_string().expect("writes");
-        for absent in ["planner", "simulation", "lanes", "description", "seed"] {
+        for absent in [
+            "planner",
+            "simulation",
+            "lanes",
+            "separation_zones",
+            "rule10",
+            "description",
+            "seed",
+        ] {
             assert!(!text.contains(absent), "{absent} in {text}");
         }
         assert!(!text.contains("Some("), "{text}");

@@ -15,6 +15,7 @@ pub mod geojson_land;
 pub mod io;
 pub mod planner_settings;
 pub mod scenario;
+pub mod scheme;
 pub mod simulation;
 pub mod validate;
 
@@ -38,6 +39,7 @@ pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,
 };
+pub use scheme::{Rule10Settings, SeparationZoneSpec, scenario_constraint};
 pub use simulation::{
     COMMANDED_GOAL_TOLERANCE_M, ClosedLoop, CommandError, CommandedRun, Decision, LoopState,
     PlanCheck, PlanEvent, PlanTrigger, RecordedMotion, RecordedMotionError, RunStatus,

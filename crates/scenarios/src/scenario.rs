@@ -8,6 +8,7 @@ use crate::geo::{
     LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions, check_lat_lon, parse_utc_time,
 };
 use crate::planner_settings::PlannerSettings;
+use crate::scheme::{Rule10Settings, SeparationZoneSpec};
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 use time::OffsetDateTime;
@@ -70,6 +71,12 @@ pub struct Scenario {
     /// directory. Not part of the file.
     #[serde(skip)]
     pub base_dir: Option<PathBuf>,
+    /// Separation zones of the scheme (rule 10(e)), if any.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub separation_zones: Vec<SeparationZoneSpec>,
+    /// Rule 10's tolerances; absent fields take the defaults (decision 30).
+    #[serde(default, skip_serializing_if = "Rule10Settings::is_empty")]
+    pub rule10: Rule10Settings,
     /// The planner seed to use when none is given elsewhere.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
@@ -103,6 +110,8 @@ impl PartialEq for Scenario {
             land_clearance_m,
             geojson_land: _,
             base_dir: _,
+            separation_zones,
+            rule10,
             seed,
             start_time,
             source: _,
@@ -118,6 +127,8 @@ impl PartialEq for Scenario {
             && *no_go == other.no_go
             && *land_geojson == other.land_geojson
             && *land_clearance_m == other.land_clearance_m
+            && *separation_zones == other.separation_zones
+            && *rule10 == other.rule10
             && *seed == other.seed
             && *start_time == other.start_time
     }
@@ -151,6 +162,8 @@ impl Scenario {
             land_clearance_m: None,
             geojson_land: Vec::new(),
             base_dir: None,
+            separation_zones: Vec::new(),
+            rule10: crate::scheme::Rule10Settings::default(),
             seed: None,
             start_time: None,
             source: String::new(),
@@ -208,12 +221,6 @@ impl Scenario {
             }
             None => None,
         };
-        if frame.is_some() && !self.lanes.is_empty() {
-            return Err((
-                "lanes".into(),
-                "are given in a geographic scenario: traffic lanes are only supported in local scenarios (start_nm/start_m)".into(),
-            ));
-        }
         project_vessel(&mut self.ownship, "ownship", frame.as_ref())?;
         for (index, target) in self.targets.iter_mut().enumerate() {
             let who = format!("targets[{index}] {:?}", target.name);
@@ -558,17 +565,31 @@ impl SimulationSettings {
 }
 
 /// One traffic lane of a traffic separation scheme: a strip `width_nm` wide
-/// centred on the line from `from_nm` to `to_nm`, traffic flowing from `from`
-/// toward `to`.
+/// centred on the line from `from_nm` to `to_nm` (in a geographic scenario
+/// `from_lat_lon` to `to_lat_lon`), traffic flowing from `from` toward `to`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Lane {
     /// Name, e.g. `"westbound"`.
     pub name: String,
-    /// Upstream end of the centre line `(east, north)`, nautical miles.
-    pub from_nm: (f64, f64),
+    /// Upstream end of the centre line `(east, north)`, nautical miles
+    /// (local scenarios).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_nm: Option<(f64, f64)>,
     /// Downstream end of the centre line `(east, north)`, nautical miles.
-    pub to_nm: (f64, f64),
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_nm: Option<(f64, f64)>,
+    /// Upstream end `(latitude, longitude)`, degrees WGS84 (geographic
+    /// scenarios).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_lat_lon: Option<(f64, f64)>,
+    /// Downstream end `(latitude, longitude)`, degrees WGS84.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_lat_lon: Option<(f64, f64)>,
+    /// `from_lat_lon` (as `start_m`) and `to_lat_lon` (as `goal_m`) in the
+    /// local frame: derived by [`Scenario::validate`], not part of the file.
+    #[serde(skip)]
+    pub projected: ProjectedPositions,
     /// Full width of the lane, nautical miles (> 0).
     pub width_nm: f64,
 }

@@ -4,7 +4,6 @@ use crate::error::ScenarioError;
 use crate::planner_settings::describe_config_error;
 use crate::scenario::{Lane, Scenario, VesselSpec};
 use vorrt_colregs::rules;
-use vorrt_geometry::DVec2;
 use vorrt_planner::error::Readable;
 use vorrt_planner::{PlannerConfig, Turning};
 
@@ -129,6 +128,10 @@ impl Scenario {
         // Long ships can touch beyond the clearance.
         self.check_hulls_apart().map_err(|(f, p)| invalid(f, p))?;
         self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
+        // The scheme last: its lanes and zones are projected with the frame
+        // the vessels were (decision 30).
+        let frame = self.local_frame();
+        crate::scheme::check_scheme(self, frame.as_ref()).map_err(|(f, p)| invalid(f, p))?;
         for (index, lane) in self.lanes.iter().enumerate() {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
         }
@@ -459,10 +462,8 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
 fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
     let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
     check_name(&lane.name).map_err(|problem| (field("name"), problem))?;
-    check_position(Who::Ownship, "", Some(lane.from_nm), 1.0)
-        .map_err(|(_, p)| (field("from_nm"), p))?;
-    check_position(Who::Ownship, "", Some(lane.to_nm), 1.0)
-        .map_err(|(_, p)| (field("to_nm"), p))?;
+    check_position(Who::Ownship, "", lane.from_nm, 1.0).map_err(|(_, p)| (field("from_nm"), p))?;
+    check_position(Who::Ownship, "", lane.to_nm, 1.0).map_err(|(_, p)| (field("to_nm"), p))?;
     if !(lane.width_nm.is_finite() && lane.width_nm > 0.0 && lane.width_nm <= MAX_EXTENT_NM) {
         return Err((
             field("width_nm"),
@@ -472,10 +473,16 @@ fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
             ),
         ));
     }
-    if DVec2::from(lane.from_nm) == DVec2::from(lane.to_nm) {
+    // Ends were projected (geographic) or checked above by now.
+    if lane.from_m() == lane.to_m() {
+        let name = if lane.to_nm.is_some() {
+            "to_nm"
+        } else {
+            "to_lat_lon"
+        };
         return Err((
-            field("to_nm"),
-            "is the same point as from_nm: a lane needs a direction".into(),
+            field(name),
+            "is the same point as the lane's other end: a lane needs a direction".into(),
         ));
     }
     Ok(())

@@ -4,10 +4,8 @@
 //! really limiting the starboard alteration.
 //!
 //! The land is read here from the `GeoJSON` by hand and measured with `geo`,
-//! independently of the planner's land constraint. The fields `land_geojson`
-//! and `land_clearance_m` are read from the text, and the lanes taken off
-//! before validation, so that this test runs whether or not the scenario
-//! format knows land and geographic lanes yet.
+//! independently of the planner's land constraint; the scenario itself is
+//! loaded with `Scenario::load`, as a user loads it.
 
 use geo::{
     Contains, Coord, Distance, Euclidean, LineString, MultiPolygon, Point, Polygon, Validation,
@@ -49,24 +47,10 @@ fn load(name: &str) -> Fixture {
     let text = std::fs::read_to_string(&path).unwrap();
     let geojson = field_value(&text, "land_geojson").to_owned();
     let clearance_m: f64 = field_value(&text, "land_clearance_m").parse().unwrap();
-    let stripped: String = text
-        .lines()
-        .filter(|line| {
-            let line = line.trim();
-            !(line.starts_with("land_geojson:") || line.starts_with("land_clearance_m:"))
-        })
-        .fold(String::new(), |mut text, line| {
-            text.push_str(line);
-            text.push('\n');
-            text
-        });
-    // The scenario files' RON dialect: `Option` fields written bare.
-    let mut scenario: Scenario = ron::Options::default()
-        .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
-        .from_str(&stripped)
-        .unwrap();
-    let lanes = std::mem::take(&mut scenario.lanes);
-    scenario.validate().unwrap();
+    // Loaded as a user loads it: land, lanes and separation zones validated
+    // by the format (start and goal off land, lanes well formed).
+    let scenario = Scenario::load(&path).unwrap();
+    let lanes = scenario.lanes.clone();
     let frame = scenario.local_frame().expect("a geographic scenario");
     let land_lon_lat = read_land(&coastal_dir().join(geojson));
     let land_m = project(&land_lon_lat, &frame);
@@ -242,8 +226,8 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
     assert_eq!(fixture.lanes.len(), 2);
     let mut crossings_m = Vec::new();
     for lane in &fixture.lanes {
-        let from_m = DVec2::from(lane.from_nm) * NAUTICAL_MILE_M;
-        let to_m = DVec2::from(lane.to_nm) * NAUTICAL_MILE_M;
+        let from_m = DVec2::from(lane.from_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
+        let to_m = DVec2::from(lane.to_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
         let flow = (to_m - from_m).normalize();
         // Rule 10(c): the route crosses the flow at right angles (within 1°).
         let angle_deg = route.dot(flow).abs().acos().to_degrees();
@@ -282,7 +266,7 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
     // and the two lanes leave a separation zone of 1.5 nm between them.
     let lane_sw = &fixture.lanes[0];
     assert!(lane_sw.name.contains("south-west"));
-    let flow_sw = (DVec2::from(lane_sw.to_nm) - DVec2::from(lane_sw.from_nm)).normalize();
+    let flow_sw = (DVec2::from(lane_sw.to_nm.expect("a lane in nm")) - DVec2::from(lane_sw.from_nm.expect("a lane in nm"))).normalize();
     assert!(heading(220.0).dot(flow_sw) > 0.999);
     assert!(crossings_m[0] < crossings_m[1]);
     let gap_nm = (crossings_m[1] - crossings_m[0]) / NAUTICAL_MILE_M - 2.5;
@@ -292,8 +276,8 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
         let start_m = target.projected.start_m.unwrap();
         let course = (target.projected.goal_m.unwrap() - start_m).normalize();
         let in_lane = fixture.lanes.iter().any(|lane| {
-            let from_m = DVec2::from(lane.from_nm) * NAUTICAL_MILE_M;
-            let flow = (DVec2::from(lane.to_nm) * NAUTICAL_MILE_M - from_m).normalize();
+            let from_m = DVec2::from(lane.from_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
+            let flow = (DVec2::from(lane.to_nm.expect("a lane in nm")) * NAUTICAL_MILE_M - from_m).normalize();
             (start_m - from_m).perp_dot(flow).abs() < 0.5 * lane.width_nm * NAUTICAL_MILE_M
                 && course.dot(flow) > 0.999
         });

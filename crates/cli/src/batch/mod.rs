@@ -493,5 +493,24 @@ pub(crate) fn summary_table(summary: &BatchSummary) -> String {
         "failed plans         {} in {} runs",
         summary.failed_plans, summary.runs_with_failed_plans
     );
+    if summary.lane_crossings > 0 || summary.runs_with_rule10_findings > 0 {
+        let p = &summary.crossing_off_perpendicular_deg;
+        let _ = writeln!(
+            text,
+            "rule 10              {} lane crossings, {} square; off perpendicular ° p50 {} p99 {} max {}",
+            summary.lane_crossings,
+            summary
+                .lane_crossing_square_rate
+                .map_or_else(|| "-".to_owned(), percent),
+            number(p.p50, 1),
+            number(p.p99, 1),
+            number(p.max, 1)
+        );
+        let _ = writeln!(
+            text,
+            "rule 10 findings     in {} runs; separation zone entered in {} runs",
+            summary.runs_with_rule10_findings, summary.runs_with_separation_zone_entry
+        );
+    }
     text
 }

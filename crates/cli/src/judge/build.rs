@@ -559,6 +559,8 @@ fn synthesized_scenario(
         land_clearance_m: None,
         geojson_land: Vec::new(),
         base_dir: None,
+        separation_zones: Vec::new(),
+        rule10: vorrt_scenarios::Rule10Settings::default(),
         seed: None,
         start_time,
         source: format!("{file} (scenario synthesized by vorrt judge)"),

@@ -141,6 +141,9 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     };
     let _ = writeln!(text, "reached goal:   {arrival}");
     report.write_overhead_lines(&mut text);
+    if let Some(rule10) = &report.rule10 {
+        rule10.write_lines(&mut text);
+    }
     let quality = &report.path_quality;
     let _ = writeln!(
         text,

@@ -4,6 +4,7 @@ use super::BatchItem;
 use crate::evaluation::{Evaluation, TargetEvaluation, succeeded};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
+use vorrt_colregs::rule10::Rule10Clause;
 use vorrt_colregs::{ComplianceViolation, Role};
 
 /// The results of one scenario of a batch: one CSV row.
@@ -105,6 +106,24 @@ pub struct BatchRow {
     /// Whether it came within `land_clearance_m` of land.
     #[serde(default)]
     pub land_clearance_violation: bool,
+    /// Lanes crossed (rule 10, on the track as sailed).
+    #[serde(default)]
+    pub lane_crossings: usize,
+    /// Of those, the ones within the crossing tolerance of perpendicular
+    /// to the flow (10(c)).
+    #[serde(default)]
+    pub lane_crossings_square: usize,
+    /// The largest angle of the heading from perpendicular to the flow in
+    /// any crossing, degrees (empty without a crossing).
+    #[serde(default)]
+    pub crossing_off_perpendicular_deg: Option<f64>,
+    /// Stretches inside a separation zone other than crossing it (10(e)).
+    #[serde(default)]
+    pub separation_zone_entries: usize,
+    /// Every distinct rule-10 finding (as sailed), `;`-separated
+    /// (`rule_10c_crossing_not_square`).
+    #[serde(default)]
+    pub rule10_findings: String,
 }
 
 /// A value a row read back from an older `rows.csv` lacks.
@@ -179,6 +198,11 @@ impl BatchRow {
             min_land_distance_m: None,
             grounding: false,
             land_clearance_violation: false,
+            lane_crossings: 0,
+            lane_crossings_square: 0,
+            crossing_off_perpendicular_deg: None,
+            separation_zone_entries: 0,
+            rule10_findings: String::new(),
         }
     }
 
@@ -251,6 +275,24 @@ impl BatchRow {
             }),
             rule_departures: evaluation.rule_departures,
             time_overhead_pct: evaluation.time_overhead_pct,
+            lane_crossings: evaluation.rule10.crossings.len(),
+            lane_crossings_square: evaluation.rule10.square_crossings(),
+            crossing_off_perpendicular_deg: evaluation
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| crossing.max_off_perpendicular_deg)
+                .reduce(f64::max),
+            separation_zone_entries: evaluation.rule10.count(Rule10Clause::SeparationZone),
+            rule10_findings: evaluation
+                .rule10
+                .findings
+                .iter()
+                .map(|finding| finding.clause.key())
+                .collect::<BTreeSet<_>>()
+                .into_iter()
+                .collect::<Vec<_>>()
+                .join(";"),
         }
     }
 }

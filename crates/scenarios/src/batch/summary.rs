@@ -147,6 +147,24 @@ pub struct BatchSummary {
     /// The least distance to land per run with land, metres.
     #[serde(default)]
     pub min_land_distance_m: Percentiles,
+    /// Lane crossings over the batch (rule 10, as sailed).
+    #[serde(default)]
+    pub lane_crossings: usize,
+    /// The share of them within the crossing tolerance of perpendicular
+    /// to the flow (10(c)); `None` without a crossing.
+    #[serde(default)]
+    pub lane_crossing_square_rate: Option<f64>,
+    /// Per run with a crossing, the largest angle of the heading from
+    /// perpendicular to the flow, degrees.
+    #[serde(default)]
+    pub crossing_off_perpendicular_deg: Percentiles,
+    /// Runs with a stretch inside a separation zone other than crossing it
+    /// (10(e)).
+    #[serde(default)]
+    pub runs_with_separation_zone_entry: usize,
+    /// Runs with any rule-10 finding.
+    #[serde(default)]
+    pub runs_with_rule10_findings: usize,
 }
 
 impl BatchSummary {
@@ -185,6 +203,7 @@ impl BatchSummary {
             .collect();
         let ran: Vec<&&BatchRow> = rows.iter().filter(|row| row.error.is_empty()).collect();
         let give_way_encounters: usize = ran.iter().map(|row| row.give_way_encounters).sum();
+        let lane_crossings: usize = ran.iter().map(|row| row.lane_crossings).sum();
         let share = |count: usize| {
             (give_way_encounters > 0).then(|| count as f64 / give_way_encounters as f64)
         };
@@ -224,6 +243,25 @@ impl BatchSummary {
             min_land_distance_m: Percentiles::of(
                 ran.iter().filter_map(|row| row.min_land_distance_m),
             ),
+            lane_crossings,
+            lane_crossing_square_rate: (lane_crossings > 0).then(|| {
+                ran.iter()
+                    .map(|row| row.lane_crossings_square)
+                    .sum::<usize>() as f64
+                    / lane_crossings as f64
+            }),
+            crossing_off_perpendicular_deg: Percentiles::of(
+                ran.iter()
+                    .filter_map(|row| row.crossing_off_perpendicular_deg),
+            ),
+            runs_with_separation_zone_entry: ran
+                .iter()
+                .filter(|row| row.separation_zone_entries > 0)
+                .count(),
+            runs_with_rule10_findings: ran
+                .iter()
+                .filter(|row| !row.rule10_findings.is_empty())
+                .count(),
         }
     }
 

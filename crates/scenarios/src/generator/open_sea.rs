@@ -305,6 +305,8 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
         land_clearance_m: None,
         geojson_land: Vec::new(),
         base_dir: None,
+        separation_zones: Vec::new(),
+        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated open-sea seed {seed} index {index}>"),

@@ -11,15 +11,15 @@ use super::target::{BehaviourTarget, TargetMotion};
 use crate::chart::Chart;
 use crate::error::ScenarioError;
 use crate::scenario::Scenario;
+use crate::scheme::scenario_constraint;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
+use vorrt_planner::scheme::SchemeConstraint;
 use vorrt_planner::validity::EncounterState;
-use vorrt_planner::{
-    Constraint, NoConstraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem,
-};
+use vorrt_planner::{Constraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
@@ -158,11 +158,13 @@ struct Setup<C> {
 ///
 /// [`simulate`](super::simulate) is [`ClosedLoop::run`]; stepping by hand
 /// gives the same [`SimulationRecord`]. Ownship's planner keeps a user
-/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; none by default),
-/// beside the scenario's [`Chart`] (land, no-go areas), which it always keeps:
-/// every plan, every check of the plan in force and the evasive manoeuvre.
+/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; by default the
+/// scenario's traffic separation scheme, [`scenario_constraint`], which
+/// refuses nothing without lanes), beside the scenario's [`Chart`] (land,
+/// no-go areas), which it always keeps: every plan, every check of the plan
+/// in force and the evasive manoeuvre.
 #[derive(Debug)]
-pub struct ClosedLoop<C = NoConstraint> {
+pub struct ClosedLoop<C = SchemeConstraint> {
     setup: Setup<C>,
     step: usize,
     time_s: f64,
@@ -236,6 +238,8 @@ impl ClosedLoop {
     /// As [`with_config`](Self::with_config), with every target moved by
     /// `motions` (one per scenario target, in its order, each at time 0)
     /// instead of its behaviour; the targets keep the scenario's names.
+    /// Ownship's planner keeps the scenario's traffic separation scheme
+    /// ([`scenario_constraint`]).
     ///
     /// ```
     /// use vorrt_scenarios::{ClosedLoop, RecordedMotion, Scenario, TimedState};
@@ -260,7 +264,13 @@ impl ClosedLoop {
         seed: u64,
         motions: Vec<Box<dyn TargetMotion>>,
     ) -> Result<Self, ScenarioError> {
-        ClosedLoop::with_constraint(scenario, config, seed, motions, NoConstraint)
+        ClosedLoop::with_constraint(
+            scenario,
+            config,
+            seed,
+            motions,
+            scenario_constraint(scenario),
+        )
     }
 }
 
