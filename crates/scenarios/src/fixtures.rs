@@ -26,6 +26,10 @@ pub struct Fixture {
     pub file: &'static str,
     /// Its text.
     pub text: &'static str,
+    /// The text of the `GeoJSON` file its `land_geojson` names (a real
+    /// coastline beside it in `fixtures/<group>/`), embedded too; `None`
+    /// without one.
+    pub land_geojson: Option<&'static str>,
 }
 
 impl Fixture {
@@ -59,7 +63,11 @@ impl Fixture {
     /// None for the bundled files (a test loads each one); the error type is
     /// that of [`Scenario::from_ron_str`].
     pub fn load(&self) -> Result<Scenario, ScenarioError> {
-        Scenario::from_ron_str(self.text, &self.source())
+        match self.land_geojson {
+            // Its coastline comes embedded too: inline land, no file read.
+            Some(land) => Scenario::from_ron_str_with_land_geojson(self.text, &self.source(), land),
+            None => Scenario::from_ron_str(self.text, &self.source()),
+        }
     }
 }
 
@@ -69,6 +77,15 @@ macro_rules! fixture {
             group: $group,
             file: $file,
             text: include_str!(concat!("../fixtures/", $group, "/", $file)),
+            land_geojson: None,
+        }
+    };
+    ($group:literal, $file:literal, $land:literal) => {
+        Fixture {
+            group: $group,
+            file: $file,
+            text: include_str!(concat!("../fixtures/", $group, "/", $file)),
+            land_geojson: Some(include_str!(concat!("../fixtures/", $group, "/", $land))),
         }
     };
 }
@@ -105,7 +122,22 @@ pub const BUNDLED: &[Fixture] = &[
     fixture!("imazu", "imazu_22.ron"),
     fixture!("geo", "channel_ais.ron"),
     fixture!("coastal", "crossing_coast.ron"),
+    fixture!(
+        "coastal",
+        "dover_tss_crossing.ron",
+        "dover_strait_ne10m.geojson"
+    ),
     fixture!("coastal", "island.ron"),
+    fixture!(
+        "coastal",
+        "kent_coast_head_on.ron",
+        "dover_strait_ne10m.geojson"
+    ),
+    fixture!(
+        "coastal",
+        "new_york_narrows_approach.ron",
+        "new_york_harbor_ne10m.geojson"
+    ),
 ];
 
 /// The bundled fixture called `name`: `<group>/<file>` with or without the
@@ -164,6 +196,23 @@ mod tests {
         assert_eq!(crate::io::bundled_fixtures_dir(), root);
     }
 
+    /// A fixture with an embedded coastline loads the same land as its
+    /// file does from disk, beside its `GeoJSON`.
+    #[test]
+    fn embedded_coastline_is_the_file_beside_it() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
+        let with_land: Vec<_> = BUNDLED.iter().filter(|f| f.land_geojson.is_some()).collect();
+        assert_eq!(with_land.len(), 3);
+        for fixture in with_land {
+            let embedded = fixture.load().expect("valid");
+            let from_disk =
+                Scenario::load(&root.join(fixture.group).join(fixture.file)).expect("valid");
+            assert!(from_disk.land_geojson.is_some() && embedded.land_geojson.is_none());
+            assert!(!embedded.land.is_empty());
+            assert_eq!(embedded.land, from_disk.geojson_land, "{}", fixture.name());
+        }
+    }
+
     #[test]
     fn every_embedded_fixture_is_valid() {
         for fixture in BUNDLED {
@@ -189,7 +238,7 @@ mod tests {
         assert_eq!(group("paper").count(), 5);
         assert_eq!(group("imazu").count(), 22);
         assert_eq!(group("geo").count(), 1);
-        assert_eq!(group("coastal").count(), 2);
+        assert_eq!(group("coastal").count(), 5);
         assert_eq!(group("golden").count(), 0);
     }
 }

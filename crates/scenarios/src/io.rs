@@ -72,9 +72,45 @@ impl Scenario {
         Self::parse_ron(text, source, None)
     }
 
+    /// As [`Scenario::from_ron_str`], with the text of the `GeoJSON` file
+    /// its `land_geojson` names given instead of read from disk: its
+    /// polygons become inline `land` areas (`land_geojson` is then `None`).
+    /// This is how the bundled fixtures with real coastlines load with no
+    /// file beside them ([`crate::fixtures::Fixture::load`]).
+    ///
+    /// # Errors
+    /// As [`Scenario::from_ron_str`]; field `land_geojson` when the
+    /// `GeoJSON` text holds no valid land.
+    pub fn from_ron_str_with_land_geojson(
+        text: &str,
+        source: &str,
+        land_geojson: &str,
+    ) -> Result<Scenario, ScenarioError> {
+        let mut scenario = Self::deserialize_ron(text, source)?;
+        let areas = crate::geojson_land::parse_land_geojson(land_geojson).map_err(|problem| {
+            ScenarioError::Invalid {
+                file: source.to_owned(),
+                field: "land_geojson".into(),
+                problem,
+            }
+        })?;
+        scenario.land.extend(areas);
+        scenario.land_geojson = None;
+        scenario.validate()?;
+        Ok(scenario)
+    }
+
     /// As [`Scenario::from_ron_str`], resolving a relative `land_geojson`
     /// from `base_dir` (`None`: the current directory).
     fn parse_ron(text: &str, source: &str, base_dir: Option<&Path>) -> Result<Scenario, ScenarioError> {
+        let mut scenario = Self::deserialize_ron(text, source)?;
+        scenario.base_dir = base_dir.map(Path::to_path_buf);
+        scenario.validate()?;
+        Ok(scenario)
+    }
+
+    /// The scenario of RON `text`, not yet validated.
+    fn deserialize_ron(text: &str, source: &str) -> Result<Scenario, ScenarioError> {
         let syntax = |error: ron::error::SpannedError, path: Option<String>| {
             let message = error.code.to_string();
             ScenarioError::Syntax {
@@ -107,8 +143,6 @@ impl Scenario {
             .end()
             .map_err(|error| syntax(deserializer.span_error(error), None))?;
         source.clone_into(&mut scenario.source);
-        scenario.base_dir = base_dir.map(Path::to_path_buf);
-        scenario.validate()?;
         Ok(scenario)
     }
 

@@ -226,8 +226,8 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
     assert_eq!(fixture.lanes.len(), 2);
     let mut crossings_m = Vec::new();
     for lane in &fixture.lanes {
-        let from_m = DVec2::from(lane.from_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
-        let to_m = DVec2::from(lane.to_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
+        let from_m = lane.from_m();
+        let to_m = lane.to_m();
         let flow = (to_m - from_m).normalize();
         // Rule 10(c): the route crosses the flow at right angles (within 1°).
         let angle_deg = route.dot(flow).abs().acos().to_degrees();
@@ -266,7 +266,7 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
     // and the two lanes leave a separation zone of 1.5 nm between them.
     let lane_sw = &fixture.lanes[0];
     assert!(lane_sw.name.contains("south-west"));
-    let flow_sw = (DVec2::from(lane_sw.to_nm.expect("a lane in nm")) - DVec2::from(lane_sw.from_nm.expect("a lane in nm"))).normalize();
+    let flow_sw = (lane_sw.to_m() - lane_sw.from_m()).normalize();
     assert!(heading(220.0).dot(flow_sw) > 0.999);
     assert!(crossings_m[0] < crossings_m[1]);
     let gap_nm = (crossings_m[1] - crossings_m[0]) / NAUTICAL_MILE_M - 2.5;
@@ -276,8 +276,8 @@ fn dover_tss_crossing_is_in_water_and_crosses_the_lanes_square() {
         let start_m = target.projected.start_m.unwrap();
         let course = (target.projected.goal_m.unwrap() - start_m).normalize();
         let in_lane = fixture.lanes.iter().any(|lane| {
-            let from_m = DVec2::from(lane.from_nm.expect("a lane in nm")) * NAUTICAL_MILE_M;
-            let flow = (DVec2::from(lane.to_nm.expect("a lane in nm")) * NAUTICAL_MILE_M - from_m).normalize();
+            let from_m = lane.from_m();
+            let flow = (lane.to_m() - from_m).normalize();
             (start_m - from_m).perp_dot(flow).abs() < 0.5 * lane.width_nm * NAUTICAL_MILE_M
                 && course.dot(flow) > 0.999
         });
