@@ -270,6 +270,11 @@ fn velocity_of(known: &mut KnownVelocity, target: &VesselState) -> DVec2 {
 /// [`SafetyChecker::within_reach`] to be worked out for it.
 const PRUNE_PIECES: f64 = 4.0;
 
+/// The fewest targets for which [`SafetyChecker::within_reach`] is worked
+/// out: with fewer, the few it could skip spared less than it cost
+/// (callgrind, `profile_tss 20 1`, 16 targets).
+const PRUNE_TARGETS: usize = 32;
+
 /// Judges ownship's motion: the seam shared by tree growth, path
 /// simplification and a closed loop's plan check.
 ///
@@ -319,10 +324,11 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
     ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
         // once: the others can change no verdict (decision 33). Worth it
-        // only on a leg of many pieces: on the short legs of a tree (one or
-        // two pieces) it cost more than it spared, 100 targets near
+        // only on a leg of many pieces among many targets: on the short
+        // legs of a tree (one or two pieces) it cost more than it spared
         // (`vorrt simulate` of a generated 100-target encounter: +20 % CPU).
-        let in_reach = (leg.length_m() > PRUNE_PIECES * self.config().step_m)
+        let in_reach = (self.tracks().len() >= PRUNE_TARGETS
+            && leg.length_m() > PRUNE_PIECES * self.config().step_m)
             .then(|| self.within_reach(leg, start_elapsed_s, &state.latches, &state.alterations));
         let checker = in_reach.as_deref().map_or_else(
             || self.only_within(&[]),
