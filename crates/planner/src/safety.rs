@@ -236,9 +236,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                     .max(track.then_velocity_mps.length());
                 let range_m = leg.start_m.distance(track.position_at(start_elapsed_s));
                 let closing_m = own_reach_m + target_speed_mps * span_s;
-                // A metre to spare for rounding; written so that a NaN
-                // keeps the target.
-                !(range_m - closing_m >= self.reach_m(track, margin_m) + 1.0)
+                // A metre to spare for rounding; a NaN keeps the target.
+                let out_of_reach = range_m - closing_m >= self.reach_m(track, margin_m) + 1.0;
+                !out_of_reach
             })
             .collect()
     }

@@ -71,10 +71,11 @@ impl EncounterState {
         self.advance_with(
             own_then,
             steady_course_rad,
-            (tracks.len(), |index: usize| {
-                tracks[index].position_at(elapsed_s)
-            }),
-            |index| tracks[index].state_at(elapsed_s),
+            (
+                tracks.len(),
+                |index: usize| tracks[index].position_at(elapsed_s),
+                |index: usize| tracks[index].state_at(elapsed_s),
+            ),
             (time_s, rules),
             None,
             |_| false,
@@ -102,10 +103,11 @@ impl EncounterState {
         self.advance_with(
             own_then,
             steady_course_rad,
-            (tracks.len(), |index: usize| {
-                tracks[index].position_at(elapsed_s)
-            }),
-            |index| tracks[index].state_at(elapsed_s),
+            (
+                tracks.len(),
+                |index: usize| tracks[index].position_at(elapsed_s),
+                |index: usize| tracks[index].state_at(elapsed_s),
+            ),
             clock,
             Some(known),
             |index| !checker.may_reach(index),
@@ -131,10 +133,11 @@ impl EncounterState {
         self.advance_with(
             own_then,
             steady_course_rad,
-            (targets_then.len(), |index: usize| {
-                targets_then[index].position_m
-            }),
-            |index| targets_then[index],
+            (
+                targets_then.len(),
+                |index: usize| targets_then[index].position_m,
+                |index: usize| targets_then[index],
+            ),
             (time_s, rules),
             None,
             |_| false,
@@ -154,14 +157,17 @@ impl EncounterState {
         &mut self,
         own_then: &VesselState,
         steady_course_rad: f64,
-        positions_then: (usize, impl Fn(usize) -> DVec2),
-        state_then: impl Fn(usize) -> VesselState,
+        targets_then: (
+            usize,
+            impl Fn(usize) -> DVec2,
+            impl Fn(usize) -> VesselState,
+        ),
         clock: (f64, &RuleParameters),
         mut known: Option<&mut Vec<KnownVelocity>>,
         out_of_reach: impl Fn(usize) -> bool,
     ) {
         let (time_s, rules) = clock;
-        let (count, position_then) = positions_then;
+        let (count, position_then, state_then) = targets_then;
         // Whether ownship was acting for some vessel up to now (giving way,
         // or free to act within the action range): a stand-on encounter
         // then carries the course it was free to take.
@@ -275,6 +281,30 @@ const PRUNE_PIECES: f64 = 4.0;
 /// (callgrind, `profile_tss 20 1`, 16 targets).
 const PRUNE_TARGETS: usize = 32;
 
+/// The course an observer sees steady at the end of a piece
+/// ([`steady_course_rad`] over [`STEADY_COURSE_WINDOW_S`]): `times_s` are
+/// just before the leg, its start, the end of its turn (or of the piece,
+/// if sooner) and the piece's end; `courses_rad` the course before the
+/// leg, at its start, and at the piece's end (held from the turn's end).
+fn steady_through_turn(times_s: [f64; 4], courses_rad: [f64; 3]) -> f64 {
+    let [before_rad, start_rad, now_rad] = courses_rad;
+    steady_course_rad(
+        &times_s,
+        &[before_rad, start_rad, now_rad, now_rad],
+        STEADY_COURSE_WINDOW_S,
+    )
+    .unwrap_or(now_rad)
+}
+
+/// Whether [`SafetyChecker::within_reach`] is worth working out for `leg`:
+/// only on a leg of many pieces among many targets. On the short legs of a
+/// tree (one or two pieces) it cost more than it spared (`vorrt simulate`
+/// of a generated 100-target encounter: +20 % CPU).
+fn worth_pruning<C: Constraint>(checker: &SafetyChecker<'_, C>, leg: &Leg) -> bool {
+    checker.tracks().len() >= PRUNE_TARGETS
+        && leg.length_m() > PRUNE_PIECES * checker.config().step_m
+}
+
 /// Judges ownship's motion: the seam shared by tree growth, path
 /// simplification and a closed loop's plan check.
 ///
@@ -323,17 +353,10 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
-        // once: the others can change no verdict (decision 33). Worth it
-        // only on a leg of many pieces among many targets: on the short
-        // legs of a tree (one or two pieces) it cost more than it spared
-        // (`vorrt simulate` of a generated 100-target encounter: +20 % CPU).
-        let in_reach = (self.tracks().len() >= PRUNE_TARGETS
-            && leg.length_m() > PRUNE_PIECES * self.config().step_m)
+        // once: the others can change no verdict (decision 33).
+        let in_reach = worth_pruning(self, leg)
             .then(|| self.within_reach(leg, start_elapsed_s, &state.latches, &state.alterations));
-        let checker = in_reach.as_deref().map_or_else(
-            || self.only_within(&[]),
-            |in_reach| self.only_within(in_reach),
-        );
+        let checker = self.only_within(in_reach.as_deref().unwrap_or(&[]));
         let piece_error_m = leg.piece_error_m();
         let timing_error_m = leg.timing_error_m();
         // Before the leg: on the first leg of a plan that starts in a turn,
@@ -403,17 +426,10 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 piece.course_rad
             };
             let turn_end_s = (start_elapsed_s + leg.turn_duration_s()).min(end_elapsed_s);
-            let steady_course_rad = steady_course_rad(
-                &[before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
-                &[
-                    before_course_rad,
-                    leg.start_course_rad,
-                    course_rad,
-                    course_rad,
-                ],
-                STEADY_COURSE_WINDOW_S,
-            )
-            .unwrap_or(course_rad);
+            let steady_course_rad = steady_through_turn(
+                [before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
+                [before_course_rad, leg.start_course_rad, course_rad],
+            );
             let own_then = VesselState {
                 position_m: piece.end_m(),
                 course_rad,

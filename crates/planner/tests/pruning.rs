@@ -66,6 +66,24 @@ fn near_and_latched_targets_are_in_reach_and_far_ones_are_not() {
         checker.within_reach(&long, 0.0, &none, &zeros),
         [true, false, false, true]
     );
+    // The reach: MTD, which is wider than d_th (200 m) plus half the two
+    // lengths (100 m) plus the margin.
+    assert!((checker.reach_m(&tracks[0], 50.0) - config.rules.mtd_m).abs() < 1e-9);
+    assert!((checker.required_distance_m(&tracks[0]) - 300.0).abs() < 1e-9);
+    let wide = PlannerConfig {
+        clearance_m: 10_000.0,
+        ..PlannerConfig::default()
+    };
+    let wide_checker = SafetyChecker::new(&wide, &tracks, own(), goal, 0.0);
+    assert!((wide_checker.reach_m(&tracks[0], 50.0) - 10_150.0).abs() < 1e-9);
+    // The checker that judges only the targets in reach.
+    let mask = checker.within_reach(&leg, 0.0, &none, &zeros);
+    let only = checker.only_within(&mask);
+    let judged: Vec<bool> = (0..tracks.len())
+        .map(|index| only.may_reach(index))
+        .collect();
+    assert_eq!(judged, mask);
+    assert!((0..tracks.len()).all(|index| checker.may_reach(index)));
     // An encounter in force, or an alteration carried, keeps a target in reach.
     let latch = EncounterLatch::new(Encounter::HeadOn, &own(), 0.0);
     let latched = [None, Some(latch), None, None];

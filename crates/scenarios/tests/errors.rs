@@ -238,7 +238,10 @@ fn a_vessel_at_rest_on_ownships_goal_is_rejected() {
     .expect("370 m from the goal, beyond the 350 m kept");
     // A moving target that only passes near the goal is no obstacle to it.
     Scenario::from_ron_str(
-        &with(original, &anchored.replace("speed_kn: 0.0", "speed_kn: 10.0")),
+        &with(
+            original,
+            &anchored.replace("speed_kn: 0.0", "speed_kn: 10.0"),
+        ),
         "ok.ron",
     )
     .expect("moves on");
