@@ -229,7 +229,7 @@ pub(crate) enum DirectionName {
 /// The generator options shared by `batch --generate` and `generate`.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct GeneratorArgs {
-    /// Open sea: number of targets per scenario (1-64).
+    /// Open sea: number of targets per scenario (1-256).
     #[arg(long, value_name = "N")]
     pub(crate) targets: Option<usize>,
     /// TSS: traffic density, targets per nautical mile of lane [default: 1].

@@ -125,6 +125,8 @@ impl Scenario {
         self.check_route(&config).map_err(|(f, p)| invalid(f, p))?;
         self.check_clearance(&config)
             .map_err(|(f, p)| invalid(f, p))?;
+        self.check_goal_clear(&config)
+            .map_err(|(f, p)| invalid(f, p))?;
         // Long ships can touch beyond the clearance.
         self.check_hulls_apart().map_err(|(f, p)| invalid(f, p))?;
         self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
@@ -259,6 +261,52 @@ impl Scenario {
                     format!(
                         "is {range:.1} m from ownship's start, inside the planner clearance of {} m",
                         Readable(config.clearance_m)
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// No target that never moves (at anchor: speed 0, or its goal where it
+    /// starts; a `Noisy` target's speed wanders, so it moves) lies nearer
+    /// ownship's goal than the distance ownship must keep from it (`d_th`
+    /// plus their contact range, as the planner keeps it:
+    /// `SafetyChecker::required_distance_m`). No plan can then end at the
+    /// goal, and a run would only fail every plan and sail on past it
+    /// (issue 24; decision 33).
+    fn check_goal_clear(&self, config: &PlannerConfig) -> Result<(), (String, String)> {
+        let Some(goal) = self.ownship.goal_position_m() else {
+            return Ok(());
+        };
+        let goal_field = if self.ownship.goal_nm.is_some() {
+            "goal_nm"
+        } else if self.ownship.goal_m.is_some() {
+            "goal_m"
+        } else {
+            "goal_lat_lon"
+        };
+        for (index, target) in self.targets.iter().enumerate() {
+            let start = target.start_position_m();
+            let at_rest = !matches!(target.behaviour, crate::Behaviour::Noisy { .. })
+                && (target.speed_kn == 0.0
+                    || (target.behaviour.announces_goal()
+                        && target.goal_position_m() == Some(start)));
+            if !at_rest {
+                continue;
+            }
+            let required_m =
+                config.clearance_m + rules::contact_range_m(self.ownship.length_m, target.length_m);
+            let range_m = goal.distance(start);
+            if range_m < required_m {
+                return Err((
+                    Who::Target(index, &target.name).field(start_field(target)),
+                    format!(
+                        "lies at rest {} m from ownship's goal (ownship.{goal_field}), nearer than the {} m ownship must keep from it (planner clearance {} m plus half the two lengths): no plan can reach that goal; move ownship's goal at least {} m from the vessel",
+                        Readable(range_m.round()),
+                        Readable(required_m.round()),
+                        Readable(config.clearance_m),
+                        Readable(required_m.ceil()),
                     ),
                 ));
             }

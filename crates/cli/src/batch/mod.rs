@@ -51,7 +51,7 @@ impl GeneratorArgs {
                     ));
                 }
                 let targets = self.targets.ok_or_else(|| {
-                    CliError::BadInput("open sea needs --targets N (1 to 64)".into())
+                    CliError::BadInput("open sea needs --targets N (1 to 256)".into())
                 })?;
                 Ok(GeneratorSpec::OpenSea(
                     OpenSeaSpec::with_targets(targets).with_behaviour(behaviour),
