@@ -110,24 +110,20 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
         at_unix_s,
         range_nm: args.range_nm,
     };
-    let import =
+    let mut import =
         build_scenario(&log, &options).map_err(|error| CliError::BadInput(error.to_string()))?;
     for note in &import.notes {
         console::warn(&format!("note: {note}"));
     }
-    let mut text = import
+    if let Some(coast) = &args.coast {
+        let land =
+            crate::coast::add_land(&import.scenario, coast, args.coast_margin_nm, &args.out)?;
+        import.scenario.land_geojson = Some(land.to_owned());
+    }
+    let text = import
         .scenario
         .to_ron_string()
         .map_err(|error| CliError::Output(error.to_string()))?;
-    if let Some(coast) = &args.coast {
-        text = crate::coast::add_land(
-            &import.scenario,
-            &text,
-            coast,
-            args.coast_margin_nm,
-            &args.out,
-        )?;
-    }
     if let Some(parent) = args
         .out
         .parent()
@@ -140,6 +136,16 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
     std::fs::write(&args.out, text).map_err(|error| {
         CliError::Output(format!("cannot write {}: {error}", args.out.display()))
     })?;
+    // The coast may put a vessel on land, or within the land clearance of
+    // it: say so now, with the format's own message, not at the first run.
+    if args.coast.is_some()
+        && let Err(error) = vorrt_scenarios::Scenario::load(&args.out)
+    {
+        console::warn(&format!(
+            "warning: {} does not validate with its land: {error}",
+            args.out.display()
+        ));
+    }
     console::line(&format!(
         "wrote {}: ownship {:?} and {} targets{}",
         args.out.display(),

@@ -220,11 +220,12 @@ fn import_ais_with_a_coast_writes_the_land_beside_the_scenario() {
     assert!(output.status.success(), "{}", stderr(&output));
     let written = std::fs::read_to_string(&scenario).unwrap();
     assert!(
-        written
-            .trim_end()
-            .ends_with("land_geojson: \"land.geojson\",\n)"),
+        written.contains("\n    land_geojson: \"land.geojson\",\n"),
         "{written}"
     );
+    // It loads with its land, from the file beside it.
+    let loaded = vorrt_scenarios::Scenario::load(&scenario).unwrap();
+    assert_eq!(loaded.land_areas().count(), 1);
     let land = read_polygons(&dir.path().join("run/land.geojson"));
     assert_eq!(land.0.len(), 1, "the island only: {land:?}");
     // With a margin of 1 nm the island (1.5 nm off) is clipped away: a warning.

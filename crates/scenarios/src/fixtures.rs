@@ -201,7 +201,10 @@ mod tests {
     #[test]
     fn embedded_coastline_is_the_file_beside_it() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
-        let with_land: Vec<_> = BUNDLED.iter().filter(|f| f.land_geojson.is_some()).collect();
+        let with_land: Vec<_> = BUNDLED
+            .iter()
+            .filter(|f| f.land_geojson.is_some())
+            .collect();
         assert_eq!(with_land.len(), 3);
         for fixture in with_land {
             let embedded = fixture.load().expect("valid");

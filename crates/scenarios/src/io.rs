@@ -102,7 +102,11 @@ impl Scenario {
 
     /// As [`Scenario::from_ron_str`], resolving a relative `land_geojson`
     /// from `base_dir` (`None`: the current directory).
-    fn parse_ron(text: &str, source: &str, base_dir: Option<&Path>) -> Result<Scenario, ScenarioError> {
+    fn parse_ron(
+        text: &str,
+        source: &str,
+        base_dir: Option<&Path>,
+    ) -> Result<Scenario, ScenarioError> {
         let mut scenario = Self::deserialize_ron(text, source)?;
         scenario.base_dir = base_dir.map(Path::to_path_buf);
         scenario.validate()?;

@@ -162,8 +162,8 @@ pub(crate) fn write_coast(
 
 /// For `vorrt import-ais --coast`: clips `coast` to the area of `scenario`'s
 /// vessels and goal grown by `margin_nm`, writes it as [`LAND_FILE`] beside
-/// `scenario_out`, and returns the scenario's RON text `ron_text` with a
-/// `land_geojson` field naming it.
+/// `scenario_out`, and returns its file name, for the scenario's
+/// `land_geojson` (relative: resolved from the scenario file's folder).
 ///
 /// # Errors
 /// [`CliError::BadInput`] when the coast cannot be read or the area is
@@ -171,11 +171,10 @@ pub(crate) fn write_coast(
 #[expect(clippy::similar_names, reason = "the same margin in two units")]
 pub(crate) fn add_land(
     scenario: &vorrt_scenarios::Scenario,
-    ron_text: &str,
     coast: &Path,
     margin_nm: f64,
     scenario_out: &Path,
-) -> Result<String, CliError> {
+) -> Result<&'static str, CliError> {
     let points: Vec<(f64, f64)> = std::iter::once(&scenario.ownship)
         .chain(&scenario.targets)
         .flat_map(|vessel| [vessel.start_lat_lon, vessel.goal_lat_lon])
@@ -194,41 +193,5 @@ pub(crate) fn add_land(
         |name| name.to_string_lossy().into_owned(),
     );
     write_coast(&land, &land_out, &source, &options, None)?;
-    with_land_geojson(ron_text, LAND_FILE)
-}
-
-/// `ron_text` (a scenario as `Scenario::to_ron_string` writes it, ending in
-/// `)`) with the field `land_geojson: "<file>"` added as its last field.
-fn with_land_geojson(ron_text: &str, file: &str) -> Result<String, CliError> {
-    let body = ron_text
-        .trim_end()
-        .strip_suffix(')')
-        .ok_or_else(|| CliError::Output("the scenario text does not end in ')'".into()))?;
-    let body = body.trim_end();
-    let separator = if body.ends_with(',') || body.ends_with('(') {
-        ""
-    } else {
-        ","
-    };
-    Ok(format!(
-        "{body}{separator}\n    land_geojson: {file:?},\n)\n"
-    ))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_land_file_becomes_the_last_field() {
-        let text = "Scenario(\n    name: \"x\",\n    start_time: \"2024-05-01T12:00:00Z\",\n)\n";
-        let with = with_land_geojson(text, LAND_FILE).unwrap();
-        assert!(with.ends_with("    start_time: \"2024-05-01T12:00:00Z\",\n    land_geojson: \"land.geojson\",\n)\n"), "{with}");
-        let bare = with_land_geojson("Scenario(name: \"x\")", "a.geojson").unwrap();
-        assert_eq!(
-            bare,
-            "Scenario(name: \"x\",\n    land_geojson: \"a.geojson\",\n)\n"
-        );
-        assert!(with_land_geojson("nonsense", "a").is_err());
-    }
+    Ok(LAND_FILE)
 }
