@@ -124,7 +124,7 @@ pub(crate) fn run(options: &DemoOptions) -> Result<ExitStatus, CliError> {
     let (fixtures, mut entries) = match &options.fixtures {
         Some(dir) => (dir.display().to_string(), collect(dir)?),
         None => (
-            "the bundled fixtures (paper, imazu, geo)".to_owned(),
+            "the bundled fixtures (paper, imazu, geo, coastal)".to_owned(),
             collect_bundled()?,
         ),
     };
@@ -247,11 +247,15 @@ impl<Print: Fn(&str)> OrderedLines<Print> {
     }
 }
 
+/// The width of the name column: the longest bundled scenario's folder
+/// (`coastal/new_york_narrows_approach`), so the columns line up.
+const NAME_WIDTH: usize = 34;
+
 fn progress_line(outcome: &Outcome) -> String {
     let name = outcome.entry.folder().display().to_string();
     match &outcome.result {
         Ok(report) => format!(
-            "  {name:<22} {:<7} min {:>8} (d_th {:.0} m)  {:<9}  overhead path {:>5.1} %, time {:>5.1} %  {:.1} s",
+            "  {name:<NAME_WIDTH$} {:<7} min {:>8} (d_th {:.0} m)  {:<9}  overhead path {:>5.1} %, time {:>5.1} %  {:.1} s",
             if report.reached_goal_safely {
                 "safe"
             } else {
@@ -270,7 +274,7 @@ fn progress_line(outcome: &Outcome) -> String {
             report.time_overhead_pct,
             outcome.wall_time_s
         ),
-        Err(error) => format!("  {name:<22} ERROR {error}"),
+        Err(error) => format!("  {name:<NAME_WIDTH$} ERROR {error}"),
     }
 }
 
@@ -553,5 +557,14 @@ mod tests {
             href(&Path::new("paper").join("crossing").join("x.png")),
             "paper/crossing/x.png"
         );
+    }
+
+    /// Every bundled scenario's name fits the column, so the lines align.
+    #[test]
+    fn every_bundled_name_fits_the_name_column() {
+        for fixture in vorrt_scenarios::fixtures::BUNDLED {
+            let name = format!("{}/{}", fixture.group, fixture.stem());
+            assert!(name.len() <= NAME_WIDTH, "{name}");
+        }
     }
 }
