@@ -231,6 +231,8 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         seed: None,
         start_time,
         source: format!("{} (imported)", options.log_name),
+        recorded_tracks: None,
+        recorded: vorrt_scenarios::RecordedTracks::default(),
     };
     // Validate as a loaded file would be: through the text.
     let text = scenario.to_ron_string()?;

@@ -1,6 +1,7 @@
 //! Reading and writing scenario files (RON).
 
 use crate::error::ScenarioError;
+use crate::recorded_tracks::RecordedTracks;
 use crate::scenario::Scenario;
 use ron::extensions::Extensions;
 use ron::ser::PrettyConfig;
@@ -62,17 +63,37 @@ impl Scenario {
         Ok(scenario)
     }
 
-    /// Reads, parses and validates the scenario file at `path`.
+    /// Reads, parses and validates the scenario file at `path`, and the
+    /// recorded tracks it names (`recorded_tracks`, relative to the file's
+    /// folder) into [`Scenario::recorded`].
     ///
     /// # Errors
-    /// [`ScenarioError::Io`] when the file cannot be read, else as
+    /// [`ScenarioError::Io`] when the file or its tracks cannot be read, a
+    /// [`ScenarioError::Invalid`] naming the tracks file, line and field
+    /// for a bad row, or a `Recorded` target without a track; else as
     /// [`Scenario::from_ron_str`].
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Io {
             path: path.to_owned(),
             source,
         })?;
-        Self::from_ron_str(&text, &path.display().to_string())
+        let mut scenario = Self::from_ron_str(&text, &path.display().to_string())?;
+        if let Some(relative) = &scenario.recorded_tracks {
+            let tracks_path = path.parent().unwrap_or(Path::new("")).join(relative);
+            let text =
+                std::fs::read_to_string(&tracks_path).map_err(|source| ScenarioError::Io {
+                    path: tracks_path.clone(),
+                    source,
+                })?;
+            scenario.recorded = RecordedTracks::from_csv_str(
+                &text,
+                &tracks_path.display().to_string(),
+                scenario.local_frame().as_ref(),
+                |vessel| scenario.vessel_length_m(vessel),
+            )?;
+            scenario.check_recorded()?;
+        }
+        Ok(scenario)
     }
 
     /// The scenario as pretty-printed RON, in the format it was read from.
@@ -182,6 +203,8 @@ mod tests {
             seed: Some(u64::MAX),
             start_time: None,
             source: "everything".into(),
+            recorded_tracks: None,
+            recorded: crate::RecordedTracks::default(),
         }
     }
 

@@ -10,6 +10,7 @@ pub mod generator;
 pub mod geo;
 pub mod io;
 pub mod planner_settings;
+pub mod recorded_tracks;
 pub mod scenario;
 pub mod simulation;
 pub mod validate;
@@ -26,6 +27,7 @@ pub use generator::{
 pub use geo::{LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions};
 pub use io::{SCENARIO_EXTENSION, bundled_fixtures_dir, load_dir};
 pub use planner_settings::PlannerSettings;
+pub use recorded_tracks::RecordedTracks;
 pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,

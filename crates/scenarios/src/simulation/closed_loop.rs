@@ -7,9 +7,10 @@ use super::planning::{
     ActivePlan, PlanCall, RetryTimer, follow, plan_now, remaining_legs, replan_trigger,
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
+use super::recorded::RecordedMotion;
 use super::target::{BehaviourTarget, TargetMotion};
 use crate::error::ScenarioError;
-use crate::scenario::Scenario;
+use crate::scenario::{Behaviour, Scenario};
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
@@ -199,12 +200,15 @@ impl ClosedLoop {
     /// caller.
     ///
     /// # Errors
-    /// [`ScenarioError::Invalid`] (field `planner`) when `config` is invalid.
+    /// [`ScenarioError::Invalid`]: field `planner` when `config` is
+    /// invalid, a target's `behaviour` when it is `Recorded` and has no
+    /// track in [`Scenario::recorded`].
     pub fn with_config(
         scenario: &Scenario,
         config: &PlannerConfig,
         seed: u64,
     ) -> Result<Self, ScenarioError> {
+        scenario.check_recorded()?;
         Self::with_motions(
             scenario,
             config,
@@ -214,7 +218,9 @@ impl ClosedLoop {
     }
 
     /// The scenario's targets as a run seeded with `seed` moves them, each
-    /// by its [`Behaviour`](crate::Behaviour), in the scenario's order: the
+    /// by its [`Behaviour`](crate::Behaviour), in the scenario's order (a
+    /// `Recorded` one by a [`RecordedMotion`] on its track in
+    /// [`Scenario::recorded`]; without one, on its course and speed): the
     /// motions [`with_config`](Self::with_config) uses, to replace some
     /// (with a [`RecordedMotion`](super::RecordedMotion), say) before
     /// [`with_motions`](Self::with_motions).
@@ -225,7 +231,14 @@ impl ClosedLoop {
             .iter()
             .enumerate()
             .map(|(index, spec)| {
-                Box::new(BehaviourTarget::new(spec, index, seed)) as Box<dyn TargetMotion>
+                let recorded = (spec.behaviour == Behaviour::Recorded)
+                    .then(|| scenario.recorded.track(&spec.name))
+                    .flatten()
+                    .and_then(|states| RecordedMotion::new(states.to_vec()).ok());
+                match recorded {
+                    Some(motion) => Box::new(motion) as Box<dyn TargetMotion>,
+                    None => Box::new(BehaviourTarget::new(spec, index, seed)),
+                }
             })
             .collect()
     }
