@@ -7,6 +7,7 @@
 use crate::error::AisError;
 use crate::import::{ImportOptions, build_scenario};
 use crate::log::{AisLog, VesselTrack};
+use std::fmt::Write as _;
 use vorrt_scenarios::{Behaviour, Scenario};
 
 /// What to replay.
@@ -132,7 +133,21 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
         target.behaviour = Behaviour::Recorded;
     }
     scenario.recorded_tracks = Some(options.tracks_file.clone());
-    let mut tracks_csv = String::from("vessel,mmsi,time_s,lat_deg,lon_deg,course_deg,speed_kn\n");
+    let tracks_csv = tracks_csv(log, &scenario, start_s, &mut notes);
+    // Validate as a loaded file would be: through the text.
+    let text = scenario.to_ron_string()?;
+    let scenario = Scenario::from_ron_str(&text, &scenario.source)?;
+    Ok(Replay {
+        scenario,
+        tracks_csv,
+        notes,
+    })
+}
+
+/// The tracks file of `scenario`'s vessels from `log`: each dated report,
+/// its time in seconds from `start_s`; the reports left out go to `notes`.
+fn tracks_csv(log: &AisLog, scenario: &Scenario, start_s: f64, notes: &mut Vec<String>) -> String {
+    let mut csv = String::from("vessel,mmsi,time_s,lat_deg,lon_deg,course_deg,speed_kn\n");
     for vessel in std::iter::once(&scenario.ownship).chain(&scenario.targets) {
         let Some(track) = vessel.mmsi.and_then(|mmsi| log.vessels.get(&mmsi)) else {
             continue;
@@ -149,8 +164,10 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
                 }
             }
             let optional = |value: Option<f64>| value.map(|v| v.to_string()).unwrap_or_default();
-            tracks_csv.push_str(&format!(
-                "{},{},{},{},{},{},{}\n",
+            // Writing to a String cannot fail.
+            let _ = writeln!(
+                csv,
+                "{},{},{},{},{},{},{}",
                 csv_field(&vessel.name),
                 track.mmsi,
                 last_s - start_s,
@@ -158,7 +175,7 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
                 report.lon_deg,
                 optional(report.course_deg),
                 optional(report.speed_kn),
-            ));
+            );
         }
         if skipped > 0 {
             notes.push(format!(
@@ -167,14 +184,7 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
             ));
         }
     }
-    // Validate as a loaded file would be: through the text.
-    let text = scenario.to_ron_string()?;
-    let scenario = Scenario::from_ron_str(&text, &scenario.source)?;
-    Ok(Replay {
-        scenario,
-        tracks_csv,
-        notes,
-    })
+    csv
 }
 
 #[cfg(test)]

@@ -22,7 +22,7 @@ fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).expect("written")).expect("JSON")
 }
 
-/// Asserts a report (or judgement) has no collision and kept d_th.
+/// Asserts a report (or judgement) has no collision and kept `d_th`.
 fn assert_safe(report: &serde_json::Value) {
     assert_eq!(report["collision"], false, "{report}");
     let min_m = report["min_distance_m"].as_f64().expect("a distance");
@@ -121,10 +121,12 @@ fn synthetic_tracks() -> (String, Vec<(f64, &'static str, f64, f64)>) {
         y_m += 8.0 * knots * after_s * std::f64::consts::FRAC_1_SQRT_2;
         rows.push((time_s, "B", x_m, y_m));
     }
-    let mut csv = String::from("vessel,time_s,east_m,north_m\n");
-    for (time_s, vessel, x_m, y_m) in &rows {
-        csv.push_str(&format!("{vessel},{time_s},{x_m},{y_m}\n"));
-    }
+    let csv: String = std::iter::once("vessel,time_s,east_m,north_m\n".to_owned())
+        .chain(
+            rows.iter()
+                .map(|(time_s, vessel, x_m, y_m)| format!("{vessel},{time_s},{x_m},{y_m}\n")),
+        )
+        .collect();
     (csv, rows)
 }
 
