@@ -146,17 +146,34 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
 
 /// The tracks file of `scenario`'s vessels from `log`: each dated report,
 /// its time in seconds from `start_s`; the reports left out go to `notes`.
+/// Ownship's track, the human's, starts at its last report at or before
+/// the start (the state the run starts from), so that `vorrt judge` judges
+/// it over the run's time, not before it.
 fn tracks_csv(log: &AisLog, scenario: &Scenario, start_s: f64, notes: &mut Vec<String>) -> String {
     let mut csv = String::from("vessel,mmsi,time_s,lat_deg,lon_deg,course_deg,speed_kn\n");
-    for vessel in std::iter::once(&scenario.ownship).chain(&scenario.targets) {
+    for (index, vessel) in std::iter::once(&scenario.ownship)
+        .chain(&scenario.targets)
+        .enumerate()
+    {
         let Some(track) = vessel.mmsi.and_then(|mmsi| log.vessels.get(&mmsi)) else {
             continue;
+        };
+        let from_s = if index == 0 {
+            track
+                .reports
+                .iter()
+                .filter_map(|report| report.time_unix_s)
+                .filter(|&time_s| time_s <= start_s)
+                .fold(f64::NEG_INFINITY, f64::max)
+        } else {
+            f64::NEG_INFINITY
         };
         let mut last_s = f64::NEG_INFINITY;
         let mut skipped = 0;
         for report in &track.reports {
             // Two reports in one second of the tag-block clock: the first stands.
             match report.time_unix_s {
+                Some(time_s) if time_s < from_s => continue,
                 Some(time_s) if time_s > last_s => last_s = time_s,
                 _ => {
                     skipped += 1;
@@ -229,12 +246,18 @@ mod tests {
         );
         // Every vessel has rows, ownship's first; times start before 0 or at it.
         let mut lines = replay.tracks_csv.lines().skip(1);
-        assert!(
-            lines
-                .next()
-                .expect("a row")
-                .starts_with(&scenario.ownship.name)
-        );
+        // Ownship's (the human's) rows begin at its report the run starts from.
+        let time_s = |line: &str| -> f64 {
+            line.split(',')
+                .nth(2)
+                .expect("time_s")
+                .parse()
+                .expect("a number")
+        };
+        let first = lines.next().expect("a row");
+        assert!(first.starts_with(&scenario.ownship.name));
+        assert!(time_s(first) <= 0.0, "{first}");
+        assert!(time_s(lines.next().expect("a second row")) > 0.0);
         for target in &scenario.targets {
             assert!(
                 replay
