@@ -110,7 +110,11 @@ fn compute() -> Vec<GoldenCase> {
         };
         let problem = scenario.planning_problem();
         for seed in SEEDS {
-            let mut planner = Planner::new(config).expect("valid configuration");
+            // The scenario's traffic separation scheme, as the closed loop
+            // keeps it (an empty one, refusing nothing, off a scheme).
+            let constraint = vorrt::scenarios::scenario_constraint(&scenario);
+            let mut planner =
+                Planner::with_constraint(config, constraint).expect("valid configuration");
             let outcome = match planner.plan(&problem, seed) {
                 Ok(plan) => Outcome::Plan(
                     plan.waypoints

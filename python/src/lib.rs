@@ -15,8 +15,11 @@ use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+
+mod campaign;
+mod commanded;
 use std::path::PathBuf;
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 use vorrt_cli::report::{PlanOutput, Report};
 use vorrt_geometry::{angle, units};
 use vorrt_planner::{Planner, VesselState};
@@ -59,7 +62,8 @@ pub struct PyScenario {
 
 #[pymethods]
 impl PyScenario {
-    /// Reads and validates the scenario file at `path` (RON).
+    /// Reads and validates the scenario file at `path`: RON, or JSON
+    /// (`.json`, or content starting with `{`).
     #[staticmethod]
     #[expect(
         clippy::needless_pass_by_value,
@@ -88,6 +92,67 @@ impl PyScenario {
             .map_err(|error| scenario_error(&error))
     }
 
+    /// Parses and validates a scenario from JSON text (the fields of the
+    /// RON format, tuples as lists); `source` names it in error messages.
+    #[staticmethod]
+    #[pyo3(signature = (text, source = "<string>"))]
+    fn from_json(text: &str, source: &str) -> PyResult<Self> {
+        vorrt_scenarios::Scenario::from_json_str(text, source)
+            .map(|inner| Self { inner })
+            .map_err(|error| scenario_error(&error))
+    }
+
+    /// The scenario as JSON text (`from_json` reads it back).
+    fn to_json(&self) -> PyResult<String> {
+        self.inner
+            .to_json_string()
+            .map_err(|error| scenario_error(&error))
+    }
+
+    /// Validates a scenario given as a dict (what `to_dict` gives, or
+    /// `json.load` of a JSON scenario file); `source` names it in errors.
+    #[staticmethod]
+    #[pyo3(signature = (data, source = "<dict>"))]
+    fn from_dict(py: Python<'_>, data: &Bound<'_, PyAny>, source: &str) -> PyResult<Self> {
+        let text: String = py
+            .import("json")?
+            .call_method1("dumps", (data,))
+            .map_err(|error| {
+                ScenarioError::new_err(format!("{source}: not a JSON-like dict: {error}"))
+            })?
+            .extract()?;
+        Self::from_json(&text, source)
+    }
+
+    /// The scenario as a dict of plain values (the JSON form).
+    fn to_dict(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        json_loads(py, &self.to_json()?)
+    }
+
+    /// The planner seed the scenario asks for, if any.
+    #[getter]
+    fn seed(&self) -> Option<u64> {
+        self.inner.seed
+    }
+
+    /// A copy with planner seed `seed` (`None` removes it).
+    #[pyo3(signature = (seed))]
+    fn with_seed(&self, seed: Option<u64>) -> Self {
+        let mut inner = self.inner.clone();
+        inner.seed = seed;
+        Self { inner }
+    }
+
+    /// Whether the scenario is geographic (latitudes and longitudes).
+    #[getter]
+    fn is_geographic(&self) -> bool {
+        self.inner.is_geographic()
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        self.inner == other.inner
+    }
+
     /// The scenario's name.
     #[getter]
     fn name(&self) -> &str {
@@ -114,29 +179,78 @@ fn seed_for(scenario: &vorrt_scenarios::Scenario, seed: Option<u64>) -> u64 {
     seed.or(scenario.seed).unwrap_or(1)
 }
 
-/// A finished closed-loop run (`vorrt.Run`).
+/// A finished closed-loop run (`vorrt.Run`). Its report's JSON, the dict
+/// and `trajectory.csv` are made when first asked for: a campaign that
+/// reads one field of each run pays for no more (`docs/performance.md`).
 #[pyclass(module = "vorrt", name = "Run", frozen)]
 #[derive(Debug)]
 pub struct PyRun {
-    /// The content of the command line's `report.json`, as a dict.
-    #[pyo3(get)]
-    report: Py<PyAny>,
-    /// The columns of `trajectory.csv`, as a dict of lists (numpy arrays
-    /// when numpy is installed).
-    #[pyo3(get)]
-    tracks: Py<PyAny>,
     /// Whether ownship reached its goal.
     #[pyo3(get)]
     reached_goal: bool,
-    report_json: String,
+    scenario: vorrt_scenarios::Scenario,
+    record: SimulationRecord,
+    report: Report,
+    report_json: OnceLock<String>,
+    report_dict: OnceLock<Py<PyAny>>,
+}
+
+impl PyRun {
+    fn json(&self) -> PyResult<&str> {
+        if let Some(text) = self.report_json.get() {
+            return Ok(text);
+        }
+        let text = to_json(&self.report)?;
+        Ok(self.report_json.get_or_init(|| text))
+    }
 }
 
 #[pymethods]
 impl PyRun {
     /// `report.json` as the command line writes it (pretty JSON, no final
     /// line end).
-    fn report_json(&self) -> &str {
-        &self.report_json
+    fn report_json(&self) -> PyResult<&str> {
+        self.json()
+    }
+
+    /// The content of the command line's `report.json`, as a dict (the
+    /// same dict on every access).
+    #[getter]
+    fn report(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        if let Some(dict) = self.report_dict.get() {
+            return Ok(dict.clone_ref(py));
+        }
+        let dict = json_loads(py, self.json()?)?;
+        Ok(self.report_dict.get_or_init(|| dict).clone_ref(py))
+    }
+
+    /// `trajectory.csv` as `vorrt simulate` writes it, byte for byte.
+    fn trajectory_csv(&self, py: Python<'_>) -> PyResult<String> {
+        py.detach(|| vorrt_cli::library::trajectory_csv(&self.scenario, &self.record))
+            .map_err(PyRuntimeError::new_err)
+    }
+
+    /// The columns of `trajectory.csv`: a pandas `DataFrame`, or a dict of
+    /// numpy arrays without pandas (built on each access).
+    #[getter]
+    fn tracks(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let text = self.trajectory_csv(py)?;
+        Ok(py
+            .import("vorrt._tables")?
+            .call_method1("table_from_csv", (text,))?
+            .unbind())
+    }
+
+    /// The COLREGs findings of the one evaluation: a list of dicts with
+    /// `target` (a name, or `None` for findings on ownship's track) and
+    /// `finding`.
+    #[getter]
+    fn findings(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let report = self.report(py)?;
+        Ok(py
+            .import("vorrt._tables")?
+            .call_method1("findings", (report,))?
+            .unbind())
     }
 
     fn __repr__(&self) -> String {
@@ -144,75 +258,28 @@ impl PyRun {
     }
 }
 
-fn course_deg(state: &VesselState) -> f64 {
-    angle::normalize_2pi(state.course_rad).to_degrees()
-}
-
-/// The columns of `trajectory.csv` (without hull length and latitude and
-/// longitude): one row per vessel per recorded step, ownship first.
-fn tracks(
-    py: Python<'_>,
-    scenario: &vorrt_scenarios::Scenario,
-    record: &SimulationRecord,
-) -> PyResult<Py<PyAny>> {
-    let vessels: Vec<(&str, &[VesselState])> =
-        std::iter::once((scenario.ownship.name.as_str(), record.ownship.as_slice()))
-            .chain(
-                scenario
-                    .targets
-                    .iter()
-                    .zip(&record.targets)
-                    .map(|(spec, states)| (spec.name.as_str(), states.as_slice())),
-            )
-            .collect();
-    let (mut time_s, mut vessel, mut east_m, mut north_m, mut course, mut speed_kn) =
-        (vec![], vec![], vec![], vec![], vec![], vec![]);
-    for (step, time) in record.times_s.iter().enumerate() {
-        for (name, states) in &vessels {
-            let Some(state) = states.get(step) else {
-                continue;
-            };
-            time_s.push(*time);
-            vessel.push(*name);
-            east_m.push(state.position_m.x);
-            north_m.push(state.position_m.y);
-            course.push(course_deg(state));
-            speed_kn.push(units::mps_to_knots(state.speed_mps));
-        }
-    }
-    let numpy = py.import("numpy").ok();
-    let column = |values: Bound<'_, PyList>| -> PyResult<Py<PyAny>> {
-        match &numpy {
-            Some(numpy) => Ok(numpy.call_method1("asarray", (values,))?.unbind()),
-            None => Ok(values.into_any().unbind()),
-        }
-    };
-    let dict = PyDict::new(py);
-    dict.set_item("time_s", column(PyList::new(py, time_s)?)?)?;
-    dict.set_item("vessel", column(PyList::new(py, vessel)?)?)?;
-    dict.set_item("east_m", column(PyList::new(py, east_m)?)?)?;
-    dict.set_item("north_m", column(PyList::new(py, north_m)?)?)?;
-    dict.set_item("course_deg", column(PyList::new(py, course)?)?)?;
-    dict.set_item("speed_kn", column(PyList::new(py, speed_kn)?)?)?;
-    Ok(dict.into_any().unbind())
-}
-
-/// The run of `record`: evaluated, reported as `report.json`, with its tracks.
+/// The run of `record`: evaluated and reported as `report.json` says.
 fn finished_run(
     py: Python<'_>,
     scenario: &vorrt_scenarios::Scenario,
-    record: &SimulationRecord,
-) -> PyResult<PyRun> {
-    let report_json = py.detach(|| {
-        let evaluation = evaluate(scenario, record);
-        to_json(&Report::new(scenario, record, &evaluation))
-    })?;
-    Ok(PyRun {
-        report: json_loads(py, &report_json)?,
-        tracks: tracks(py, scenario, record)?,
+    record: SimulationRecord,
+) -> PyRun {
+    let report = py.detach(|| {
+        let evaluation = evaluate(scenario, &record);
+        Report::new(scenario, &record, &evaluation)
+    });
+    PyRun {
         reached_goal: record.reached_goal,
-        report_json,
-    })
+        scenario: scenario.clone(),
+        record,
+        report,
+        report_json: OnceLock::new(),
+        report_dict: OnceLock::new(),
+    }
+}
+
+fn course_deg(state: &VesselState) -> f64 {
+    angle::normalize_2pi(state.course_rad).to_degrees()
 }
 
 /// Simulates `scenario` in closed loop with planner seed `seed` (the
@@ -225,7 +292,7 @@ fn simulate(py: Python<'_>, scenario: &PyScenario, seed: Option<u64>) -> PyResul
     let record = py
         .detach(|| vorrt_scenarios::simulate(scenario, seed))
         .map_err(|error| scenario_error(&error))?;
-    finished_run(py, scenario, &record)
+    Ok(finished_run(py, scenario, record))
 }
 
 /// The plan of `vorrt plan FILE --seed SEED` as JSON text, exactly as the
@@ -381,12 +448,14 @@ impl PyClosedLoop {
             .take()
             .ok_or_else(|| PyRuntimeError::new_err("the closed loop has been finished"))?;
         let record = run.finish();
-        finished_run(py, &self.scenario, &record)
+        Ok(finished_run(py, &self.scenario, record))
     }
 }
 
-/// The `vorrt` Python module.
+/// The `vorrt._vorrt` extension module (re-exported by the `vorrt`
+/// package).
 #[pymodule]
+#[pyo3(name = "_vorrt")]
 fn vorrt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add_class::<PyScenario>()?;
@@ -395,6 +464,8 @@ fn vorrt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(plan, m)?)?;
     m.add_function(wrap_pyfunction!(plan_json, m)?)?;
+    campaign::register(m)?;
+    commanded::register(m)?;
     m.add("ScenarioError", py.get_type::<ScenarioError>())?;
     m.add("PlanningError", py.get_type::<PlanningError>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

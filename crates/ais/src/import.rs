@@ -4,8 +4,9 @@
 use crate::error::AisError;
 use crate::log::{AisLog, PositionReport, VesselTrack};
 use vorrt_geometry::{DVec2, units};
+use vorrt_scenarios::colregs::observed::NavigationalStatus;
 use vorrt_scenarios::geo::{LocalFrame, check_lat_lon, format_utc_time};
-use vorrt_scenarios::{MAX_LENGTH_M, PlannerSettings, Scenario, SimulationSettings, VesselSpec};
+use vorrt_scenarios::{MAX_LENGTH_M, Scenario, VesselSpec};
 
 /// The length given to a vessel without a static report, metres (a typical
 /// small coaster; said on stderr by `vorrt import-ais`).
@@ -81,6 +82,9 @@ pub fn estimate(track: &VesselTrack, at_unix_s: Option<f64>) -> Option<StateEsti
     })
 }
 
+/// The note on a log without time stamps.
+const UNTIMED: &str = "the log has no time stamps (no NMEA 4.0 tag blocks): every vessel is taken at its last report, as if all were at the same time, with nothing dead-reckoned";
+
 /// A scenario made from a log, with what a person should be told about it.
 #[derive(Debug, Clone)]
 pub struct Import {
@@ -117,18 +121,69 @@ fn length_m(track: &VesselTrack, notes: &mut Vec<String>) -> f64 {
     }
 }
 
+/// A vessel's scenario entry. Its navigational status (the report's, AIS)
+/// is named in the notes where the rules read it: at anchor, moored or
+/// aground it is imported at rest (speed 0, rule 3(i): not under way); a
+/// rule 18 status is named with the responsibility it brings (decision 32).
 fn spec(track: &VesselTrack, state: &StateEstimate, notes: &mut Vec<String>) -> VesselSpec {
+    let status = state
+        .report
+        .navigational_status
+        .and_then(NavigationalStatus::from_ais);
+    let at_rest = status.is_some_and(NavigationalStatus::is_at_rest);
+    if let Some(rule) = status.and_then(NavigationalStatus::rule_18) {
+        notes.push(format!(
+            "MMSI {}: reports {}{}: {rule}",
+            track.mmsi,
+            status.map_or("", NavigationalStatus::name),
+            if at_rest {
+                format!(
+                    "; imported at rest (speed 0 kn, reported {:.1} kn)",
+                    state.speed_kn
+                )
+            } else {
+                String::new()
+            }
+        ));
+    }
+    if state.report.course_deg.is_none() {
+        notes.push(format!(
+            "MMSI {}: course over ground not available (AIS 360°){}",
+            track.mmsi,
+            match state.report.heading_deg {
+                Some(heading) => format!(": its heading {heading:.0}° is taken"),
+                None => " nor its heading (511): course 000° assumed".to_owned(),
+            }
+        ));
+    }
     let mut vessel = VesselSpec::new(
         vessel_name(track),
         (0.0, 0.0),
         state.course_deg,
-        state.speed_kn,
+        if at_rest { 0.0 } else { state.speed_kn },
         length_m(track, notes),
     );
     vessel.start_nm = None;
     vessel.start_lat_lon = Some(state.lat_lon);
     vessel.mmsi = Some(track.mmsi);
     vessel
+}
+
+/// The error for an ownship MMSI not in `log`, naming the first ten seen.
+fn unknown_mmsi(log: &AisLog, options: &ImportOptions) -> AisError {
+    let mut seen: Vec<String> = log.vessels.keys().take(10).map(u32::to_string).collect();
+    if log.vessels.len() > 10 {
+        seen.push("...".into());
+    }
+    AisError::UnknownMmsi {
+        log: options.log_name.clone(),
+        mmsi: options.ownship_mmsi,
+        seen: if seen.is_empty() {
+            "none".into()
+        } else {
+            seen.join(", ")
+        },
+    }
 }
 
 /// Builds the geographic scenario of `log`: ownship and every vessel within
@@ -151,21 +206,14 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         problem,
     })?;
     let Some(own_track) = log.vessels.get(&options.ownship_mmsi) else {
-        let mut seen: Vec<String> = log.vessels.keys().take(10).map(u32::to_string).collect();
-        if log.vessels.len() > 10 {
-            seen.push("...".into());
-        }
-        return Err(AisError::UnknownMmsi {
-            log: options.log_name.clone(),
-            mmsi: options.ownship_mmsi,
-            seen: if seen.is_empty() {
-                "none".into()
-            } else {
-                seen.join(", ")
-            },
-        });
+        return Err(unknown_mmsi(log, options));
     };
     let at_unix_s = options.at_unix_s.or(log.last_time_unix_s);
+    let mut notes: Vec<String> = at_unix_s
+        .is_none()
+        .then(|| UNTIMED.to_owned())
+        .into_iter()
+        .collect();
     let Some(own) = estimate(own_track, at_unix_s) else {
         return Err(AisError::NoOwnshipPosition {
             log: options.log_name.clone(),
@@ -176,7 +224,6 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
                 .unwrap_or_default(),
         });
     };
-    let mut notes = Vec::new();
     let mut ownship = spec(own_track, &own, &mut notes);
     ownship.goal_lat_lon = Some(options.goal_lat_lon);
     let frame = LocalFrame::new(own.lat_lon.0, own.lat_lon.1);
@@ -210,30 +257,21 @@ pub fn build_scenario(log: &AisLog, options: &ImportOptions) -> Result<Import, A
         targets.push(target);
     }
     let start_time = at_unix_s.map(describe_time);
-    let scenario = Scenario {
-        name: format!("ais-{}", options.ownship_mmsi),
-        description: Some(format!(
-            "Imported from the AIS log {} by vorrt import-ais: ownship MMSI {}, {} targets within {} nm{}.",
-            options.log_name,
-            options.ownship_mmsi,
-            targets.len(),
-            options.range_nm,
-            start_time
-                .as_deref()
-                .map(|time| format!(", states dead-reckoned to {time}"))
-                .unwrap_or_default()
-        )),
-        ownship,
-        targets,
-        planner: PlannerSettings::default(),
-        simulation: SimulationSettings::default(),
-        lanes: Vec::new(),
-        seed: None,
-        start_time,
-        source: format!("{} (imported)", options.log_name),
-        recorded_tracks: None,
-        recorded: vorrt_scenarios::RecordedTracks::default(),
-    };
+    let mut scenario = Scenario::new(format!("ais-{}", options.ownship_mmsi), ownship);
+    scenario.description = Some(format!(
+        "Imported from the AIS log {} by vorrt import-ais: ownship MMSI {}, {} targets within {} nm{}.",
+        options.log_name,
+        options.ownship_mmsi,
+        targets.len(),
+        options.range_nm,
+        start_time
+            .as_deref()
+            .map(|time| format!(", states dead-reckoned to {time}"))
+            .unwrap_or_default()
+    ));
+    scenario.targets = targets;
+    scenario.start_time = start_time;
+    scenario.source = format!("{} (imported)", options.log_name);
     // Validate as a loaded file would be: through the text.
     let text = scenario.to_ron_string()?;
     let scenario = Scenario::from_ron_str(&text, &scenario.source)?;
@@ -250,5 +288,65 @@ fn describe_time(unix_s: f64) -> String {
     match time::OffsetDateTime::from_unix_timestamp_nanos(nanos as i128) {
         Ok(time) => format_utc_time(time),
         Err(_) => format!("{unix_s} s"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn report(lat_deg: f64, course_deg: Option<f64>, speed_kn: f64, status: u8) -> PositionReport {
+        PositionReport {
+            line: 1,
+            time_unix_s: None,
+            lat_deg,
+            lon_deg: -1.0,
+            course_deg,
+            speed_kn: Some(speed_kn),
+            heading_deg: None,
+            navigational_status: Some(status),
+        }
+    }
+
+    #[test]
+    fn a_vessel_at_anchor_is_imported_at_rest_and_what_is_assumed_is_said() {
+        let mut log = AisLog::default();
+        for (mmsi, report) in [
+            (1, report(50.0, Some(90.0), 12.0, 0)),
+            (2, report(50.01, None, 0.3, 1)),
+            (3, report(49.99, Some(0.0), 6.0, 7)),
+        ] {
+            log.vessels.insert(
+                mmsi,
+                VesselTrack {
+                    mmsi,
+                    name: Some(format!("V{mmsi}")),
+                    length_m: Some(40.0),
+                    own_vessel: false,
+                    reports: vec![report],
+                },
+            );
+        }
+        let options = ImportOptions {
+            log_name: "t.nmea".into(),
+            ownship_mmsi: 1,
+            goal_lat_lon: (50.0, -0.9),
+            at_unix_s: None,
+            range_nm: 12.0,
+        };
+        let import = build_scenario(&log, &options).unwrap();
+        let anchored = &import.scenario.targets[0];
+        assert!(anchored.speed_kn.abs() < 1e-12);
+        let said = import.notes.join("\n");
+        for expected in [
+            "no time stamps",
+            "MMSI 2: reports at_anchor",
+            "imported at rest",
+            "course 000° assumed",
+            "MMSI 3: reports engaged_in_fishing",
+            "18(a)(iii)",
+        ] {
+            assert!(said.contains(expected), "{expected:?} in {said}");
+        }
     }
 }

@@ -1,12 +1,14 @@
 #![doc = include_str!("../README.md")]
 #![forbid(missing_docs)]
 
+pub mod encode;
 pub mod error;
 pub mod import;
 pub mod log;
 pub mod replay;
 pub mod tag_block;
 
+pub use encode::{EncodeError, simulation_log};
 pub use error::AisError;
 pub use import::{
     DEFAULT_LENGTH_M, DEFAULT_RANGE_NM, Import, ImportOptions, StateEstimate, build_scenario,

@@ -12,6 +12,7 @@
 
 use crate::tag_block::{TagBlockError, split_tag_block};
 use ais::messages::AisMessage;
+use ais::messages::position_report::NavigationStatus;
 use ais::messages::static_data_report::MessagePart;
 use ais::sentence::AisReportType;
 use ais::{AisFragments, AisParser};
@@ -36,8 +37,12 @@ pub struct PositionReport {
     pub course_deg: Option<f64>,
     /// Speed over ground, knots (`None`: not available).
     pub speed_kn: Option<f64>,
-    /// True heading, degrees (`None`: not available).
+    /// True heading, degrees (`None`: not available, AIS 511).
     pub heading_deg: Option<f64>,
+    /// The navigational status, its AIS code (ITU-R M.1371-5, 0-14), from a
+    /// class A report (types 1-3); `None`: 15 "not defined", or a class B
+    /// report, which carries none.
+    pub navigational_status: Option<u8>,
 }
 
 /// Everything the log says about one vessel.
@@ -104,6 +109,7 @@ struct RawPosition {
     course_deg: Option<f32>,
     speed_kn: Option<f32>,
     heading_deg: Option<u16>,
+    navigational_status: Option<u8>,
 }
 
 /// The envelope fields of a sentence the reader checks itself.
@@ -248,6 +254,7 @@ impl Reader {
             course_deg,
             speed_kn,
             heading_deg,
+            navigational_status,
         } = raw;
         let time_unix_s = self.time_unix_s;
         let (Some(lat), Some(lon)) = lat_lon else {
@@ -274,6 +281,7 @@ impl Reader {
             course_deg: finite(course_deg, 360.0),
             speed_kn: finite(speed_kn, 102.3),
             heading_deg: finite(heading_deg.map(f32::from), 360.0),
+            navigational_status,
         };
         self.track(mmsi, own).reports.push(report);
     }
@@ -309,6 +317,7 @@ impl Reader {
                     course_deg: report.course_over_ground,
                     speed_kn: report.speed_over_ground,
                     heading_deg: report.true_heading,
+                    navigational_status: report.navigation_status.map(status_code),
                 },
             ),
             AisMessage::StandardClassBPositionReport(report) => self.position(
@@ -320,6 +329,7 @@ impl Reader {
                     course_deg: report.course_over_ground,
                     speed_kn: report.speed_over_ground,
                     heading_deg: report.true_heading,
+                    navigational_status: None,
                 },
             ),
             AisMessage::ExtendedClassBPositionReport(report) => {
@@ -332,6 +342,7 @@ impl Reader {
                         course_deg: report.course_over_ground,
                         speed_kn: report.speed_over_ground,
                         heading_deg: report.true_heading,
+                        navigational_status: None,
                     },
                 );
                 self.static_data(
@@ -376,6 +387,28 @@ impl Reader {
 
 /// The message type of an armoured payload: the six bits of its first
 /// character (the crate's `AisSentence::message_type` is not that).
+/// The AIS code of a navigational status as the `ais` crate decodes it.
+fn status_code(status: NavigationStatus) -> u8 {
+    match status {
+        NavigationStatus::UnderWayUsingEngine => 0,
+        NavigationStatus::AtAnchor => 1,
+        NavigationStatus::NotUnderCommand => 2,
+        NavigationStatus::RestrictedManouverability => 3,
+        NavigationStatus::ConstrainedByDraught => 4,
+        NavigationStatus::Moored => 5,
+        NavigationStatus::Aground => 6,
+        NavigationStatus::EngagedInFishing => 7,
+        NavigationStatus::UnderWaySailing => 8,
+        NavigationStatus::ReservedForHSC => 9,
+        NavigationStatus::ReservedForWIG => 10,
+        NavigationStatus::Reserved01 => 11,
+        NavigationStatus::Reserved02 => 12,
+        NavigationStatus::Reserved03 => 13,
+        NavigationStatus::AisSartIsActive => 14,
+        NavigationStatus::Unknown(code) => code,
+    }
+}
+
 fn payload_type(payload: &[u8]) -> Option<u8> {
     let first = *payload.first()?;
     let bits = first.checked_sub(48)?;

@@ -39,7 +39,8 @@ pub(crate) enum Command {
     /// says. Prints a summary table (per target: encounter, role, minimum
     /// distance, compliance, score; overall: goal reached, minimum distance
     /// against d_th, path and time overhead, planner calls and time) and writes
-    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png and
+    /// DIR/report.json, DIR/trajectories.svg/.png, DIR/distance.svg/.png,
+    /// DIR/speed.svg/.png and
     /// DIR/trajectory.csv; for a geographic scenario also
     /// DIR/trajectory.geojson and DIR/trajectory.gpx. Exits 0 when the run
     /// reached its goal safely and obeyed COLREGs, 1 when it did not (a
@@ -58,6 +59,15 @@ pub(crate) enum Command {
         /// Output folder [default: out/<scenario name>].
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        /// Also write DIR/run.nmea: the run as AIS (ownship as !AIVDO, targets
+        /// as !AIVDM; message types 1 and 5; NMEA 4.10 tag-block times) for a
+        /// chart plotter's replay. A local scenario needs --ais-origin.
+        #[arg(long)]
+        ais: bool,
+        /// Where --ais puts a local scenario's origin (0, 0): LAT,LON in
+        /// degrees (e.g. 50.3,-1.0). A geographic scenario has its own.
+        #[arg(long, value_name = "LAT,LON", requires = "ais")]
+        ais_origin: Option<String>,
     },
     /// Plan once from the start state and print the plan as JSON.
     ///
@@ -143,6 +153,21 @@ pub(crate) enum Command {
     /// docs/real-data.md.
     #[command(after_help = EXIT_CODES)]
     ImportAis(crate::import_ais::ImportAisArgs),
+    /// Clip and simplify a coastline into the land GeoJSON of a scenario.
+    ///
+    /// Reads land polygons from GeoJSON, TopoJSON (e.g. Natural Earth's
+    /// land-10m.json from the npm package world-atlas) or an ESRI shapefile
+    /// (e.g. GSHHS L1), keeps the part inside --bbox, simplifies it to
+    /// --tolerance-m in a local metric frame keeping every ring valid, drops
+    /// pieces under --min-area-m2 and writes GeoJSON (RFC 7946) for a
+    /// scenario's land_geojson. No land in the box is a warning, not an error.
+    /// See docs/decisions/0038-coastline-sources-and-simplification.md.
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
+    #[command(after_help = EXIT_CODES)]
+    Coast(crate::coast::CoastArgs),
     /// Judge recorded tracks (any planner's) against COLREGs, as the
     /// project's own evaluation judges a run.
     ///
@@ -204,7 +229,7 @@ pub(crate) enum DirectionName {
 /// The generator options shared by `batch --generate` and `generate`.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct GeneratorArgs {
-    /// Open sea: number of targets per scenario (1-64).
+    /// Open sea: number of targets per scenario (1-256).
     #[arg(long, value_name = "N")]
     pub(crate) targets: Option<usize>,
     /// TSS: traffic density, targets per nautical mile of lane [default: 1].
@@ -249,7 +274,7 @@ pub(crate) struct BatchArgs {
         required_unless_present = "dir"
     )]
     pub(crate) generate: Option<Kind>,
-    /// Run the scenario files (*.ron) of this folder instead, in file-name
+    /// Run the scenario files (*.ron, *.json) of this folder instead, in file-name
     /// order; each with its own `seed` if it has one.
     #[arg(long, value_name = "FOLDER")]
     pub(crate) dir: Option<PathBuf>,

@@ -20,7 +20,17 @@ pub(crate) fn run(cli: Cli) -> Result<ExitStatus, CliError> {
             scenario,
             seed,
             out,
-        } => simulate_command(&scenario, seed, out.as_deref()),
+            ais,
+            ais_origin,
+        } => simulate_command(
+            &scenario,
+            seed,
+            out.as_deref(),
+            &AisOut {
+                write: ais,
+                origin: ais_origin,
+            },
+        ),
         Command::Plan {
             scenario,
             seed,
@@ -43,6 +53,7 @@ pub(crate) fn run(cli: Cli) -> Result<ExitStatus, CliError> {
         Command::Merge(args) => batch::merge_command(&args),
         Command::ImportAis(args) => crate::import_ais::import_ais_command(&args),
         Command::Judge(args) => crate::judge::judge_command(&args),
+        Command::Coast(args) => crate::coast::coast_command(&args),
     }
 }
 
@@ -80,17 +91,34 @@ pub(crate) fn summary_table(report: &Report) -> String {
     let _ = writeln!(text, "collision:      {}", yes_no(report.collision));
     report.write_safety_lines(&mut text);
     report.write_overhead_lines(&mut text);
+    if let Some(rule10) = &report.rule10 {
+        rule10.write_lines(&mut text);
+    }
     let _ = writeln!(text, "planner:        {}", planner_calls(report));
     text
+}
+
+/// What `simulate --ais` asks for.
+struct AisOut {
+    /// Whether to write `run.nmea` (`--ais`).
+    write: bool,
+    /// `--ais-origin`, as given.
+    origin: Option<String>,
 }
 
 fn simulate_command(
     path: &Path,
     seed: Option<u64>,
     out: Option<&Path>,
+    ais: &AisOut,
 ) -> Result<ExitStatus, CliError> {
     let scenario = load(path)?;
     let seed = seed_for(&scenario, seed);
+    // Before the run, so that a missing --ais-origin costs no simulation.
+    let ais_frame = ais
+        .write
+        .then(|| crate::export::ais_frame(&scenario, ais.origin.as_deref()))
+        .transpose()?;
     let dir = out.map_or_else(
         || PathBuf::from("out").join(folder_name(&scenario.name)),
         Path::to_path_buf,
@@ -99,14 +127,20 @@ fn simulate_command(
         let _ticker = Ticker::start(format!("simulating {}", scenario.source));
         let run = run_scenario(&scenario, seed)?;
         write_outputs(&scenario, &run, &dir)?;
+        if let Some(frame) = &ais_frame {
+            crate::export::write_ais(&scenario, &run.record, frame, &dir)?;
+        }
         run
     };
     console::print(&summary_table(&run.report));
-    let exports = if scenario.is_geographic() {
-        ",trajectory.csv,trajectory.geojson,trajectory.gpx"
+    let mut exports = if scenario.is_geographic() {
+        ",trajectory.csv,trajectory.geojson,trajectory.gpx".to_owned()
     } else {
-        ",trajectory.csv"
+        ",trajectory.csv".to_owned()
     };
+    if ais_frame.is_some() {
+        exports = format!("{exports},{}", crate::export::RUN_NMEA);
+    }
     console::line(&format!(
         "\nwrote {}/{{{}{exports}}}",
         dir.display(),
@@ -132,7 +166,9 @@ fn plan_command(
         .planner_config()
         .map_err(|error| CliError::BadInput(error.to_string()))?;
     let d_th_m = config.clearance_m;
-    let mut planner = Planner::new(config)
+    // The scenario's traffic separation scheme, as the closed loop keeps it.
+    let constraint = vorrt_scenarios::scenario_constraint(&scenario);
+    let mut planner = Planner::with_constraint(config, constraint)
         .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
     let outcome = {
         let _ticker = Ticker::start(format!("planning {}", scenario.source));

@@ -445,6 +445,7 @@ fn scenario_section(html: &mut String, outcome: &Outcome) {
             "distance",
             "Distance to each target over time, d_th dashed red",
         ),
+        ("speed", "Speed of every vessel over time, ownship black"),
     ] {
         let png = escape(&href(&folder.join(format!("{stem}.png"))));
         let svg = escape(&href(&folder.join(format!("{stem}.svg"))));

@@ -20,6 +20,8 @@ pub(crate) const TRAJECTORY_CSV: &str = "trajectory.csv";
 pub(crate) const TRAJECTORY_GEOJSON: &str = "trajectory.geojson";
 /// The GPX trajectory, written for geographic runs.
 pub(crate) const TRAJECTORY_GPX: &str = "trajectory.gpx";
+/// The run as AIS sentences, written by `simulate --ais`.
+pub(crate) const RUN_NMEA: &str = "run.nmea";
 
 /// The header of `trajectory.csv` (geographic runs add `lat_deg,lon_deg`).
 pub(crate) const CSV_HEADER: [&str; 7] = [
@@ -321,6 +323,72 @@ pub(crate) fn write_trajectories(
         names.push(name);
     }
     Ok(names)
+}
+
+/// The frame `simulate --ais` places a run with: a geographic scenario's
+/// own; for a local one, a frame with its origin (0, 0) at `origin`
+/// (`--ais-origin LAT,LON`). Decision 39.
+///
+/// # Errors
+/// [`CliError::BadInput`] for a local scenario without an origin, a
+/// geographic one with one, or an origin that is not LAT,LON in range.
+pub(crate) fn ais_frame(scenario: &Scenario, origin: Option<&str>) -> Result<LocalFrame, CliError> {
+    match (scenario.local_frame(), origin) {
+        (Some(frame), None) => Ok(frame),
+        (Some(_), Some(_)) => Err(CliError::BadInput(format!(
+            "{}: --ais-origin is for a local scenario; this one is geographic \
+             (start_lat_lon) and is placed by its own positions",
+            scenario.source
+        ))),
+        (None, None) => Err(CliError::BadInput(format!(
+            "{}: --ais needs --ais-origin LAT,LON for a local scenario (positions \
+             in nm or m): where its origin (0, 0) goes on the globe",
+            scenario.source
+        ))),
+        (None, Some(text)) => {
+            let bad = |why: &str| {
+                CliError::BadInput(format!(
+                    "--ais-origin is {text:?}: {why} (expected LAT,LON in degrees, e.g. 50.3,-1.0)"
+                ))
+            };
+            let (lat, lon) = text.split_once(',').ok_or_else(|| bad("no comma"))?;
+            let lat_lon: (f64, f64) = (
+                lat.trim()
+                    .parse()
+                    .map_err(|_| bad("latitude is not a number"))?,
+                lon.trim()
+                    .parse()
+                    .map_err(|_| bad("longitude is not a number"))?,
+            );
+            vorrt_scenarios::geo::check_lat_lon(lat_lon).map_err(|why| bad(&why))?;
+            Ok(LocalFrame::new(lat_lon.0, lat_lon.1))
+        }
+    }
+}
+
+/// Writes `run.nmea`: the run as AIS through `frame`
+/// ([`vorrt_ais::simulation_log`]), timed from the scenario's `start_time`
+/// (or the UNIX epoch when it has none, as the GPX is).
+///
+/// # Errors
+/// [`CliError::BadInput`] when a vessel cannot be encoded (a bad or shared
+/// MMSI), [`CliError::Output`] when the file cannot be written.
+pub(crate) fn write_ais(
+    scenario: &Scenario,
+    record: &SimulationRecord,
+    frame: &LocalFrame,
+    dir: &Path,
+) -> Result<(), CliError> {
+    #[expect(
+        clippy::cast_precision_loss,
+        reason = "UNIX seconds, exact in f64 for millions of years"
+    )]
+    let start_unix_s = wall_time(scenario, 0.0).unix_timestamp() as f64;
+    let text = vorrt_ais::simulation_log(scenario, record, frame, start_unix_s)
+        .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
+    let path = dir.join(RUN_NMEA);
+    std::fs::write(&path, text)
+        .map_err(|error| CliError::Output(format!("cannot write {}: {error}", path.display())))
 }
 
 /// The plan as a `GeoJSON` Feature: a `LineString` through its waypoints, with

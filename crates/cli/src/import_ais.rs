@@ -13,6 +13,10 @@ use vorrt_ais::{
 
 /// `vorrt import-ais`.
 #[derive(Debug, Clone, Args)]
+#[expect(
+    clippy::doc_markdown,
+    reason = "clap help text, printed verbatim by --help"
+)]
 pub(crate) struct ImportAisArgs {
     /// The AIS log: NMEA 0183 !AIVDM/!AIVDO sentences, optionally behind
     /// NMEA 4.0 tag blocks (\c:UNIXTIME,...*hh\) that give the times.
@@ -46,6 +50,15 @@ pub(crate) struct ImportAisArgs {
     /// Leave out vessels farther than this from ownship, nautical miles.
     #[arg(long, value_name = "R", default_value_t = DEFAULT_RANGE_NM)]
     pub(crate) range_nm: f64,
+    /// A coastline (any file vorrt coast reads): clipped to the scenario's
+    /// area and written as land.geojson beside the scenario, which names it
+    /// in land_geojson.
+    #[arg(long, value_name = "FILE")]
+    pub(crate) coast: Option<PathBuf>,
+    /// The margin kept around the vessels and the goal when clipping
+    /// --coast, nautical miles.
+    #[arg(long, value_name = "NM", default_value_t = crate::coast::DEFAULT_COAST_MARGIN_NM)]
+    pub(crate) coast_margin_nm: f64,
 }
 
 /// The tracks file of the replay scenario `out`: `<stem>.tracks.csv`,
@@ -116,7 +129,7 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
         describe_counts(&log.counts)
     ));
     let log_name = args.log.display().to_string();
-    let (scenario, notes, tracks) = if args.replay {
+    let (mut scenario, notes, tracks) = if args.replay {
         let tracks_file = tracks_file_name(&args.out);
         let replay = build_replay(
             &log,
@@ -151,6 +164,10 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
     for note in &notes {
         console::warn(&format!("note: {note}"));
     }
+    if let Some(coast) = &args.coast {
+        let land = crate::coast::add_land(&scenario, coast, args.coast_margin_nm, &args.out)?;
+        scenario.land_geojson = Some(land.to_owned());
+    }
     let text = scenario
         .to_ron_string()
         .map_err(|error| CliError::Output(error.to_string()))?;
@@ -171,6 +188,16 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
     if let Some((path, csv)) = &tracks {
         write(path, csv)?;
         console::line(&format!("wrote {}: the recorded tracks", path.display()));
+    }
+    // The coast may put a vessel on land, or within the land clearance of
+    // it: say so now, with the format's own message, not at the first run.
+    if args.coast.is_some()
+        && let Err(error) = vorrt_scenarios::Scenario::load(&args.out)
+    {
+        console::warn(&format!(
+            "warning: {} does not validate with its land: {error}",
+            args.out.display()
+        ));
     }
     console::line(&format!(
         "wrote {}: ownship {:?} and {} targets{}",

@@ -5,6 +5,7 @@
 
 mod args;
 mod batch;
+mod coast;
 mod commands;
 mod console;
 mod demo;
@@ -14,6 +15,7 @@ mod fixtures;
 mod font;
 mod import_ais;
 mod judge;
+pub mod library;
 mod plot;
 mod progress;
 mod replay;
@@ -39,7 +41,13 @@ use std::process::ExitCode;
 /// the same.
 #[must_use]
 pub fn main_entry() -> ExitCode {
-    let cli = match args::Cli::try_parse() {
+    ExitCode::from(run_parsed(std::env::args_os()))
+}
+
+/// [`main_entry`] on the command line `argv` (the program name first):
+/// the exit code.
+fn run_parsed(argv: impl IntoIterator<Item = std::ffi::OsString>) -> u8 {
+    let cli = match args::Cli::try_parse_from(argv) {
         Ok(cli) => cli,
         Err(error) => {
             // --help and --version are "errors" with exit code 0.
@@ -48,7 +56,7 @@ pub fn main_entry() -> ExitCode {
                 0 => ExitStatus::Success,
                 _ => ExitStatus::BadInput,
             };
-            return code.into();
+            return code.code();
         }
     };
     let status = match commands::run(cli) {
@@ -59,11 +67,11 @@ pub fn main_entry() -> ExitCode {
         }
     };
     match console::stdout_error() {
-        Some(error) if error.kind() == ErrorKind::BrokenPipe => status.into(),
+        Some(error) if error.kind() == ErrorKind::BrokenPipe => status.code(),
         Some(error) => {
             console::warn(&format!("error: cannot write to standard output: {error}"));
-            ExitStatus::BadInput.into()
+            ExitStatus::BadInput.code()
         }
-        None => status.into(),
+        None => status.code(),
     }
 }

@@ -44,13 +44,25 @@ pub struct Report {
     pub min_distance_m: Option<f64>,
     /// Whether every target stayed at least `d_th_m` away.
     pub clearance_kept: bool,
+    /// Whether ownship's track touched or crossed land (a safety failure
+    /// beside a collision; decision 29).
+    pub grounding: bool,
+    /// The least distance from ownship's track to land, metres, measured
+    /// along the curve sailed (`null` when the scenario has no land).
+    pub min_land_distance_m: Option<f64>,
+    /// The clearance from land the track is judged against
+    /// (`land_clearance_m`), metres (`null` with no land).
+    pub land_clearance_m: Option<f64>,
+    /// Whether the track kept `land_clearance_m` from land (true with no land).
+    pub land_clearance_kept: bool,
     /// Whether ownship obeyed COLREGs in every encounter, judged on the
     /// track as observed: no finding (see `docs/evaluation.md`, "Judging the
     /// track as observed").
     pub compliant: bool,
     /// Ownship's path quality as sailed.
     pub path_quality: PathQualityReport,
-    /// `reached_goal && !collision && clearance_kept`: the run succeeded
+    /// `reached_goal && !collision && clearance_kept && !grounding &&
+    /// land_clearance_kept`: the run succeeded
     /// (`vorrt_scenarios::Evaluation::success`; exit code 0 of `vorrt simulate`).
     pub reached_goal_safely: bool,
     /// Planner calls during the run.
@@ -77,6 +89,96 @@ pub struct Report {
     pub time_step_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetReport>,
+    /// Rule 10 (traffic separation schemes) on ownship's track; absent
+    /// when the scenario has no lane and no separation zone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rule10: Option<Rule10Report>,
+}
+
+/// Rule 10 on ownship's track (`docs/evaluation.md`, "Rule 10").
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Rule10Report {
+    /// No finding on the track as sailed (its heading): part of `compliant`.
+    pub clean: bool,
+    /// Every crossing of a lane, as sailed.
+    pub crossings: Vec<LaneCrossingReport>,
+    /// Every finding as sailed, as text naming the clause.
+    pub findings: Vec<String>,
+    /// Every finding on the track as observed (course over ground over the
+    /// observation window), as text; reported, not part of `compliant`.
+    pub observed_findings: Vec<String>,
+}
+
+/// One crossing of a lane.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LaneCrossingReport {
+    /// The lane's index in the scenario's `lanes`.
+    pub lane: usize,
+    /// The first sample inside the lane, seconds.
+    pub entry_time_s: f64,
+    /// The last sample inside it, seconds.
+    pub exit_time_s: f64,
+    /// The largest angle of the heading from perpendicular to the flow, degrees.
+    pub max_off_perpendicular_deg: f64,
+    /// Whether it stayed within the crossing tolerance (rule 10(c)).
+    pub square: bool,
+}
+
+impl Rule10Report {
+    /// The rule-10 part of `evaluation`, or `None` when `scenario` has no scheme.
+    #[must_use]
+    pub fn new(scenario: &Scenario, evaluation: &Evaluation) -> Option<Self> {
+        if scenario.lanes.is_empty() && scenario.separation_zones.is_empty() {
+            return None;
+        }
+        let text = |judgement: &vorrt_scenarios::colregs::rule10::Rule10Judgement| {
+            judgement.findings.iter().map(ToString::to_string).collect()
+        };
+        Some(Self {
+            clean: evaluation.rule10.is_clean(),
+            crossings: evaluation
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| LaneCrossingReport {
+                    lane: crossing.lane,
+                    entry_time_s: crossing.entry_time_s,
+                    exit_time_s: crossing.exit_time_s,
+                    max_off_perpendicular_deg: crossing.max_off_perpendicular_deg,
+                    square: crossing.square,
+                })
+                .collect(),
+            findings: text(&evaluation.rule10),
+            observed_findings: text(&evaluation.rule10_observed),
+        })
+    }
+
+    /// Appends the "rule 10" lines that `simulate` and `judge` print.
+    pub(crate) fn write_lines(&self, text: &mut String) {
+        use std::fmt::Write as _;
+        let square = self.crossings.iter().filter(|c| c.square).count();
+        let worst = self
+            .crossings
+            .iter()
+            .map(|c| c.max_off_perpendicular_deg)
+            .fold(0.0, f64::max);
+        let _ = writeln!(
+            text,
+            "rule 10:        {} lane crossings, {square} square (worst {worst:.1}° off perpendicular); {}",
+            self.crossings.len(),
+            if self.clean {
+                "no finding"
+            } else {
+                "findings:"
+            }
+        );
+        for finding in &self.findings {
+            let _ = writeln!(text, "                - {finding}");
+        }
+        for finding in &self.observed_findings {
+            let _ = writeln!(text, "                - as observed: {finding}");
+        }
+    }
 }
 
 /// Ownship's path quality as sailed.
@@ -242,6 +344,10 @@ impl Report {
                 .is_finite()
                 .then_some(evaluation.min_distance_m),
             clearance_kept: evaluation.clearance_kept,
+            grounding: evaluation.grounding,
+            min_land_distance_m: evaluation.min_land_distance_m,
+            land_clearance_m: evaluation.land_clearance_m,
+            land_clearance_kept: evaluation.land_clearance_kept,
             compliant: evaluation.compliant,
             path_quality: PathQualityReport {
                 max_turn_rate_deg_s: evaluation.max_turn_rate_deg_s,
@@ -266,6 +372,7 @@ impl Report {
             time_overhead_pct: evaluation.time_overhead_pct,
             time_step_s: record.time_step_s,
             targets: evaluation.targets.iter().map(TargetReport::new).collect(),
+            rule10: Rule10Report::new(scenario, evaluation),
         }
     }
 }
@@ -448,6 +555,20 @@ impl Report {
             None => "- (no targets)".to_owned(),
         };
         let _ = writeln!(text, "min distance:   {minimum}");
+        if let (Some(distance), Some(clearance)) = (self.min_land_distance_m, self.land_clearance_m)
+        {
+            let _ = writeln!(
+                text,
+                "land:           {distance:.1} m vs land clearance {clearance:.0} m: {}",
+                if self.grounding {
+                    "GROUNDING"
+                } else if self.land_clearance_kept {
+                    "kept"
+                } else {
+                    "BROKEN"
+                }
+            );
+        }
         let _ = writeln!(
             text,
             "COLREGs:        {}",

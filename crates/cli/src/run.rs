@@ -64,17 +64,20 @@ pub(crate) fn run_scenario(scenario: &Scenario, seed: u64) -> Result<Run, CliErr
     })
 }
 
-/// The files [`write_outputs`] writes into its folder.
-pub(crate) const OUTPUT_FILES: [&str; 6] = [
+/// The files [`write_outputs`] writes into its folder: the report, the
+/// plots ([`plot::PLOT_FILES`]) and the replay page.
+pub(crate) const OUTPUT_FILES: [&str; 8] = [
     "report.json",
-    "trajectories.svg",
-    "trajectories.png",
-    "distance.svg",
-    "distance.png",
+    plot::PLOT_FILES[0],
+    plot::PLOT_FILES[1],
+    plot::PLOT_FILES[2],
+    plot::PLOT_FILES[3],
+    plot::PLOT_FILES[4],
+    plot::PLOT_FILES[5],
     crate::replay::REPLAY_HTML,
 ];
 
-/// Writes `report.json`, the four plots, the trajectory exports
+/// Writes `report.json`, the plots, the trajectory exports
 /// ([`crate::export::write_trajectories`]) and `replay.html`
 /// ([`crate::replay::write_replay`]) of `run` into `dir` (created if needed).
 ///

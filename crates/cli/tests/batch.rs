@@ -160,7 +160,7 @@ fn bad_batch_options_exit_2() {
             "--generate",
             "open-sea",
             "--targets",
-            "65",
+            "257",
             "--out",
             out,
         ],

@@ -208,7 +208,7 @@ fn assert_report_field_names(text: &str) {
 
 /// The SVG and PNG plots in `out` are whole, titled and not empty.
 fn assert_plots_written(out: &Path) {
-    for name in ["trajectories.svg", "distance.svg"] {
+    for name in ["trajectories.svg", "distance.svg", "speed.svg"] {
         let svg = std::fs::read_to_string(out.join(name)).unwrap();
         assert!(
             svg.trim_start().starts_with("<svg"),
@@ -221,7 +221,7 @@ fn assert_plots_written(out: &Path) {
         assert!(svg.contains("<text"), "{name} has no text");
         assert!(svg.contains("crossing"), "{name} lacks its title");
     }
-    for name in ["trajectories.png", "distance.png"] {
+    for name in ["trajectories.png", "distance.png", "speed.png"] {
         let png = std::fs::read(out.join(name)).unwrap();
         assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{name} is not a PNG");
         assert!(
@@ -392,10 +392,43 @@ fn plan_names_the_tree_when_the_tree_found_it() {
 }
 
 #[test]
+fn a_vessel_at_anchor_on_the_goal_is_refused_by_check() {
+    // Issue 24: `check` accepted it, `simulate` failed every plan and sailed
+    // past the goal. Now every command refuses it, saying why (decision 33).
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("anchored.ron");
+    std::fs::write(
+        &path,
+        r#"Scenario(
+    name: "anchored",
+    ownship: Vessel(name: "ownship", start_nm: (0.0, -1.0), course_deg: 0.0,
+                    speed_kn: 12.0, length_m: 100.0, goal_nm: (0.0, 1.0)),
+    targets: [
+        Vessel(name: "anchored", start_nm: (0.0, 1.0), course_deg: 0.0, speed_kn: 0.0, length_m: 100.0),
+    ],
+)"#,
+    )
+    .unwrap();
+    for command in ["check", "plan", "simulate"] {
+        let output = vorrt(&[command, path_str(&path)]);
+        let message = stderr(&output);
+        assert_eq!(output.status.code(), Some(2), "{command}: {message}");
+        assert!(
+            message.contains("anchored.ron")
+                && message.contains("targets[0] \"anchored\".start_nm")
+                && message.contains("ownship.goal_nm")
+                && message.contains("300 m"),
+            "{command}: {message}"
+        );
+    }
+}
+
+#[test]
 fn plan_without_a_safe_path_exits_1() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("blocked.ron");
-    // A vessel at anchor on ownship's goal: the goal itself breaks d_th.
+    // A vessel bound for ownship's goal, there long before ownship and
+    // stopping on it: the goal itself breaks d_th.
     std::fs::write(
         &path,
         r#"Scenario(
@@ -403,7 +436,8 @@ fn plan_without_a_safe_path_exits_1() {
     ownship: Vessel(name: "ownship", start_nm: (0.0, -1.0), course_deg: 0.0,
                     speed_kn: 12.0, length_m: 100.0, goal_nm: (0.0, 1.0)),
     targets: [
-        Vessel(name: "anchored", start_nm: (0.0, 1.0), course_deg: 0.0, speed_kn: 0.0, length_m: 100.0),
+        Vessel(name: "arriving", start_nm: (0.0, 1.5), course_deg: 180.0, speed_kn: 12.0,
+               length_m: 100.0, goal_nm: (0.0, 1.0)),
     ],
 )"#,
     )

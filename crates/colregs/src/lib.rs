@@ -10,6 +10,7 @@ pub mod observed;
 pub mod parameters;
 pub mod passing;
 pub mod risk;
+pub mod rule10;
 pub mod rules;
 pub mod vessel;
 

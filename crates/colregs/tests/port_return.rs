@@ -64,6 +64,7 @@ fn target(name: &str, start_m: DVec2, course_deg: f64) -> RecordedTrack {
         length_m: 100.0,
         positions_m: times_s().iter().map(|t| start_m + velocity * *t).collect(),
         courses_rad: None,
+        observation: vorrt_colregs::observed::TrackObservation::default(),
     }
 }
 
@@ -95,6 +96,7 @@ fn run(return_at_s: f64, return_course_deg: f64) -> ObservedJudgement {
             length_m: 100.0,
             positions_m,
             courses_rad: Some(courses_rad),
+            observation: vorrt_colregs::observed::TrackObservation::default(),
         },
         targets: vec![
             target("TS1", DVec2::new(7000.0, 7000.0), 270.0),

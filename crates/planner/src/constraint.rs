@@ -201,6 +201,15 @@ pub trait Constraint {
         let _ = point_m;
         true
     }
+
+    /// Whether the search from the root tries a change of speed on the
+    /// course to the goal before any alteration of course
+    /// ([`ManeuverShape::SpeedOnCourse`](crate::vorrt::ManeuverShape::SpeedOnCourse)):
+    /// a route that crosses a traffic lane, whose heading rule 10(c) fixes.
+    /// The default is no.
+    fn prefers_speed_changes(&self) -> bool {
+        false
+    }
 }
 
 /// No constraint beside the COLREGs: the open sea.
@@ -229,6 +238,10 @@ impl<A: Constraint, B: Constraint> Constraint for (A, B) {
     fn admits_point(&self, point_m: DVec2) -> bool {
         self.0.admits_point(point_m) && self.1.admits_point(point_m)
     }
+
+    fn prefers_speed_changes(&self) -> bool {
+        self.0.prefers_speed_changes() || self.1.prefers_speed_changes()
+    }
 }
 
 impl<C: Constraint + ?Sized> Constraint for &C {
@@ -238,6 +251,10 @@ impl<C: Constraint + ?Sized> Constraint for &C {
 
     fn admits_point(&self, point_m: DVec2) -> bool {
         (**self).admits_point(point_m)
+    }
+
+    fn prefers_speed_changes(&self) -> bool {
+        (**self).prefers_speed_changes()
     }
 }
 
@@ -275,6 +292,8 @@ mod tests {
         let far = DVec2::new(-1e9, 1e9);
         assert!(NoConstraint.check_segment(&segment(far, -far)).is_ok());
         assert!(NoConstraint.admits_point(far));
+        assert!(!NoConstraint.prefers_speed_changes());
+        assert!(!(NoConstraint, West).prefers_speed_changes());
     }
 
     #[test]

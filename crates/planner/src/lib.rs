@@ -3,13 +3,16 @@
 
 pub mod config;
 pub mod constraint;
+pub mod crossing;
 pub mod error;
 pub mod evasion;
+pub mod land;
 pub mod plan;
 pub mod problem;
 mod replay;
 pub mod safety;
 pub mod sampler;
+pub mod scheme;
 pub mod simplify;
 mod tree;
 pub mod validity;
@@ -22,6 +25,7 @@ pub use evasion::{
     EVASION_HOLD_MARGIN_M, EvasionSearch, EvasiveManeuver, evasive_course, evasive_leg,
     evasive_leg_constrained, evasive_leg_holding,
 };
+pub use land::{LandConstraint, LandError};
 pub use plan::{Plan, PlanSource, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};
 pub use problem::PlanningProblem;
 pub use validity::{EncounterState, MotionValidator, check_legs, check_legs_with};

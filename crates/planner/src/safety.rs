@@ -130,6 +130,9 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     start_time_s: f64,
     steady_course_rad: f64,
     constraint: &'a C,
+    /// Per target, whether it may come within reach of the leg being
+    /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
+    in_reach: Option<&'a [bool]>,
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -155,6 +158,7 @@ impl<'a> SafetyChecker<'a> {
             start_time_s,
             steady_course_rad: ownship.course_rad,
             constraint: &NoConstraint,
+            in_reach: None,
         }
     }
 }
@@ -171,7 +175,99 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
             constraint,
+            in_reach: self.in_reach,
         }
+    }
+
+    /// The farthest distance between reference points at which target
+    /// `track` can change any verdict of the checks: MTD (the velocity
+    /// obstacle, the clearance ahead, a new encounter and the settled turn
+    /// look only at targets nearer than it), or the distance kept from the
+    /// target ([`required_distance_m`](Self::required_distance_m)) plus
+    /// the uncertainty of its second leg and `margin_m` (a chord's or a
+    /// speed change's error), whichever is larger.
+    #[must_use]
+    pub fn reach_m(&self, track: &LinearTrack, margin_m: f64) -> f64 {
+        self.config
+            .rules
+            .mtd_m
+            .max(self.required_distance_m(track) + track.then_margin_m + margin_m)
+    }
+
+    /// Per target, whether it may come within its [`reach_m`](Self::reach_m)
+    /// of ownship while ownship sails `leg` from `start_elapsed_s` after the
+    /// plan's start, with `latches` and `alterations` in force at the leg's
+    /// start. A target is out of reach when the distance between the two at
+    /// the leg's start, less the most both can close it by during the leg
+    /// (the leg's length for ownship, the target's highest speed on its
+    /// track times the leg's duration for the target), is still no nearer
+    /// than its reach. It then stays beyond MTD at every piece, so no
+    /// velocity obstacle, clearance ahead (whose look-ahead only targets
+    /// within MTD get), settled turn or new encounter looks at it, and
+    /// beyond `d_th` with every margin, so the clearance holds: skipping
+    /// it changes no verdict and no encounter, bit for bit (decision 33).
+    /// A target with an encounter in force, or an alteration carried, is
+    /// always in reach.
+    #[must_use]
+    pub fn within_reach(
+        &self,
+        leg: &vorrt_jfs::Leg,
+        start_elapsed_s: f64,
+        latches: &[Option<EncounterLatch>],
+        alterations: &[f64],
+    ) -> Vec<bool> {
+        let span_s = leg.duration_s();
+        let own_reach_m = leg.length_m();
+        let margin_m = leg.piece_error_m() + leg.timing_error_m();
+        self.tracks
+            .iter()
+            .enumerate()
+            .map(|(index, track)| {
+                if latches.get(index).copied().flatten().is_some()
+                    || alterations
+                        .get(index)
+                        .is_some_and(|altered| *altered != 0.0)
+                {
+                    return true;
+                }
+                let target_speed_mps = track
+                    .velocity_mps
+                    .length()
+                    .max(track.then_velocity_mps.length());
+                let range_m = leg.start_m.distance(track.position_at(start_elapsed_s));
+                let closing_m = own_reach_m + target_speed_mps * span_s;
+                // A metre to spare for rounding; a NaN keeps the target.
+                let out_of_reach = range_m - closing_m >= self.reach_m(track, margin_m) + 1.0;
+                !out_of_reach
+            })
+            .collect()
+    }
+
+    /// The same checker, judging only the targets `in_reach` marks (from
+    /// [`within_reach`](Self::within_reach), for the leg it judges).
+    #[must_use]
+    pub fn only_within<'b>(&self, in_reach: &'b [bool]) -> SafetyChecker<'b, C>
+    where
+        'a: 'b,
+    {
+        SafetyChecker {
+            config: self.config,
+            tracks: self.tracks,
+            ownship: self.ownship,
+            goal_m: self.goal_m,
+            start_time_s: self.start_time_s,
+            steady_course_rad: self.steady_course_rad,
+            constraint: self.constraint,
+            in_reach: Some(in_reach),
+        }
+    }
+
+    /// Whether target `index` may matter to what is judged (every target
+    /// unless [`only_within`](Self::only_within) said otherwise).
+    #[must_use]
+    pub fn may_reach(&self, index: usize) -> bool {
+        self.in_reach
+            .is_none_or(|in_reach| in_reach.get(index).copied().unwrap_or(true))
     }
 
     /// The planner's settings.
@@ -238,7 +334,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// # Errors
     /// [`RejectionCause::Clearance`] when a target comes nearer.
     pub fn check_clearance(&self, candidate: &Move, margin_m: f64) -> Result<(), RejectionCause> {
-        for track in self.tracks {
+        for (index, track) in self.tracks.iter().enumerate() {
+            if !self.may_reach(index) {
+                continue;
+            }
             let clearance = self.required_distance_m(track) + margin_m;
             let during = min_distance_over(
                 candidate.start_m,
@@ -332,7 +431,17 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             speed_mps: candidate.velocity_mps.length(),
             ..self.ownship
         };
-        for track in self.tracks {
+        for (index, track) in self.tracks.iter().enumerate() {
+            if !self.may_reach(index) {
+                continue;
+            }
+            // Beyond MTD no vessel is one turned toward (the rule's first
+            // test, on the same distance), and its full state, dearer
+            // than its position, is not needed.
+            let position_m = track.position_at(candidate.start_elapsed_s);
+            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules) {
+                continue;
+            }
             let target = track.state_at(candidate.start_elapsed_s);
             if is_port_turn_toward_vessel(course_before_rad, &own, &target, rules) {
                 return Err(RejectionCause::Colregs(
@@ -391,6 +500,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         let giving_way = self.acting_for_any(candidate, latches);
         let motion = Self::candidate_motion(candidate);
         for (index, track) in self.tracks.iter().enumerate() {
+            if !self.may_reach(index) {
+                continue;
+            }
             let target_position = track.position_at(candidate.start_elapsed_s);
             let target_velocity = track.velocity_at(candidate.start_elapsed_s);
             let range = candidate.start_m.distance(target_position);

@@ -328,7 +328,7 @@ const ASTERN_HOLD_M: [f64; 3] = [1000.0, 2000.0, 4000.0];
 /// rules 2(a), 8(a), 17(c)), a course further to port held to pass astern
 /// of it ([`ASTERN_DEG`], [`ASTERN_HOLD_M`], smallest first), then the leg
 /// to the goal. A longer hold of the alteration is the caller's next try.
-fn return_to_goal<M: MotionModel, V: MotionValidator>(
+pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
     hold: &SimplifiedLeg,
@@ -491,7 +491,7 @@ fn holds_short_of(abeam_m: f64) -> impl Iterator<Item = f64> {
 
 /// Whether a hold at reduced speed has reached it and ends with no
 /// encounter in force in which ownship gives way (the other vessel is past).
-fn reduction_held(hold: &Leg, after: &EncounterState) -> bool {
+pub(crate) fn reduction_held(hold: &Leg, after: &EncounterState) -> bool {
     hold.duration_s() >= hold.speed_change_s()
         && !after
             .latches

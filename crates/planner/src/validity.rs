@@ -71,10 +71,14 @@ impl EncounterState {
         self.advance_with(
             own_then,
             steady_course_rad,
-            tracks.iter().map(|track| track.position_at(elapsed_s)),
-            tracks.iter().map(|track| track.state_at(elapsed_s)),
+            (
+                tracks.len(),
+                |index: usize| tracks[index].position_at(elapsed_s),
+                |index: usize| tracks[index].state_at(elapsed_s),
+            ),
             (time_s, rules),
             None,
+            |_| false,
         );
     }
 
@@ -93,13 +97,20 @@ impl EncounterState {
     ) {
         let tracks = checker.tracks();
         let clock = (checker.start_time_s() + elapsed_s, &checker.config().rules);
+        // A target out of reach of the leg has no encounter and carries no
+        // alteration, and none can begin (it stays beyond MTD): it is
+        // skipped (`SafetyChecker::within_reach`).
         self.advance_with(
             own_then,
             steady_course_rad,
-            tracks.iter().map(|track| track.position_at(elapsed_s)),
-            tracks.iter().map(|track| track.state_at(elapsed_s)),
+            (
+                tracks.len(),
+                |index: usize| tracks[index].position_at(elapsed_s),
+                |index: usize| tracks[index].state_at(elapsed_s),
+            ),
             clock,
             Some(known),
+            |index| !checker.may_reach(index),
         );
     }
 
@@ -122,38 +133,53 @@ impl EncounterState {
         self.advance_with(
             own_then,
             steady_course_rad,
-            targets_then.iter().map(|target| target.position_m),
-            targets_then.iter().copied(),
+            (
+                targets_then.len(),
+                |index: usize| targets_then[index].position_m,
+                |index: usize| targets_then[index],
+            ),
             (time_s, rules),
             None,
+            |_| false,
         );
     }
 
     /// The one propagation behind [`advance`](Self::advance) and
-    /// [`advance_to`](Self::advance_to), with the targets' positions and
-    /// states then: the ranges need only positions, which a track gives for
-    /// less than its state; `clock` is `time_s` and the rules; `known` as
-    /// for [`advance_reusing`](Self::advance_reusing) (`None`: none kept).
+    /// [`advance_to`](Self::advance_to), with the number of targets and
+    /// each one's position then (by index), and its state then (by index,
+    /// asked only for a target within MTD or with an encounter): the ranges
+    /// need only positions, which a track gives for less than its state;
+    /// `clock` is `time_s` and the rules; `known` as
+    /// for [`advance_reusing`](Self::advance_reusing) (`None`: none kept);
+    /// `out_of_reach(index)`: that target has no encounter, carries no
+    /// alteration and cannot latch one (its state is not used).
     fn advance_with(
         &mut self,
         own_then: &VesselState,
         steady_course_rad: f64,
-        positions_then: impl Iterator<Item = DVec2>,
-        states_then: impl Iterator<Item = VesselState>,
+        targets_then: (
+            usize,
+            impl Fn(usize) -> DVec2,
+            impl Fn(usize) -> VesselState,
+        ),
         clock: (f64, &RuleParameters),
         mut known: Option<&mut Vec<KnownVelocity>>,
+        out_of_reach: impl Fn(usize) -> bool,
     ) {
         let (time_s, rules) = clock;
+        let (count, position_then, state_then) = targets_then;
         // Whether ownship was acting for some vessel up to now (giving way,
         // or free to act within the action range): a stand-on encounter
         // then carries the course it was free to take.
         let acting_for_others = acting_for_any(
             self.latches
                 .iter()
-                .zip(positions_then)
-                .filter_map(|(latch, position_m)| {
-                    let range_m = own_then.position_m.distance(position_m);
-                    latch.as_ref().map(|latch| (latch, range_m))
+                .take(count)
+                .enumerate()
+                .filter_map(|(index, latch)| {
+                    latch
+                        .as_ref()
+                        .map(|latch| (latch, own_then.position_m.distance(position_then(index))))
                 }),
             rules,
         );
@@ -167,14 +193,29 @@ impl EncounterState {
         if let Some(known) = known.as_deref_mut().filter(|_| own_velocity_mps.is_some()) {
             known.resize(self.latches.len(), None);
         }
-        for (index, ((latch, altered), target)) in self
+        for (index, (latch, altered)) in self
             .latches
             .iter_mut()
             .zip(self.alterations.iter_mut())
-            .zip(states_then)
+            .take(count)
             .enumerate()
         {
+            if out_of_reach(index) {
+                continue;
+            }
             let before = *latch;
+            if before.is_none()
+                && !vorrt_colregs::rules::within_mtd(
+                    own_then.position_m.distance(position_then(index)),
+                    rules,
+                )
+            {
+                // No encounter, and none begins beyond MTD (the latch's
+                // first test, on the same range): the state is not needed.
+                *altered = alteration_made(None, None, *altered, own_then.course_rad, false);
+                continue;
+            }
+            let target = state_then(index);
             *latch = match (before, own_velocity_mps) {
                 (Some(_), Some(own_velocity_mps)) => update_latch_steady_moving(
                     before,
@@ -231,6 +272,39 @@ fn velocity_of(known: &mut KnownVelocity, target: &VesselState) -> DVec2 {
     }
 }
 
+/// The fewest pieces of `step_m` a leg must be longer than for
+/// [`SafetyChecker::within_reach`] to be worked out for it.
+const PRUNE_PIECES: f64 = 4.0;
+
+/// The fewest targets for which [`SafetyChecker::within_reach`] is worked
+/// out: with fewer, the few it could skip spared less than it cost
+/// (callgrind, `profile_tss 20 1`, 16 targets).
+const PRUNE_TARGETS: usize = 32;
+
+/// The course an observer sees steady at the end of a piece
+/// ([`steady_course_rad`] over [`STEADY_COURSE_WINDOW_S`]): `times_s` are
+/// just before the leg, its start, the end of its turn (or of the piece,
+/// if sooner) and the piece's end; `courses_rad` the course before the
+/// leg, at its start, and at the piece's end (held from the turn's end).
+fn steady_through_turn(times_s: [f64; 4], courses_rad: [f64; 3]) -> f64 {
+    let [before_rad, start_rad, now_rad] = courses_rad;
+    steady_course_rad(
+        &times_s,
+        &[before_rad, start_rad, now_rad, now_rad],
+        STEADY_COURSE_WINDOW_S,
+    )
+    .unwrap_or(now_rad)
+}
+
+/// Whether [`SafetyChecker::within_reach`] is worth working out for `leg`:
+/// only on a leg of many pieces among many targets. On the short legs of a
+/// tree (one or two pieces) it cost more than it spared (`vorrt simulate`
+/// of a generated 100-target encounter: +20 % CPU).
+fn worth_pruning<C: Constraint>(checker: &SafetyChecker<'_, C>, leg: &Leg) -> bool {
+    checker.tracks().len() >= PRUNE_TARGETS
+        && leg.length_m() > PRUNE_PIECES * checker.config().step_m
+}
+
 /// Judges ownship's motion: the seam shared by tree growth, path
 /// simplification and a closed loop's plan check.
 ///
@@ -278,6 +352,11 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
+        // The targets that may come within reach of this leg, worked out
+        // once: the others can change no verdict (decision 33).
+        let in_reach = worth_pruning(self, leg)
+            .then(|| self.within_reach(leg, start_elapsed_s, &state.latches, &state.alterations));
+        let checker = self.only_within(in_reach.as_deref().unwrap_or(&[]));
         let piece_error_m = leg.piece_error_m();
         let timing_error_m = leg.timing_error_m();
         // Before the leg: on the first leg of a plan that starts in a turn,
@@ -321,7 +400,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 // as the manoeuvre is sailed, as the closed loop moves them at
                 // every step. While the speed changes, ownship is up to the
                 // timing error off the piece sailed at its mean velocity.
-                self.check_turning(
+                checker.check_turning(
                     &candidate,
                     &state.latches,
                     &state.alterations,
@@ -332,9 +411,9 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                     // The course the leg's turn settles on, judged against
                     // every vessel while an observer still sees the turn
                     // (decision 28).
-                    self.check_settled_turn(before_course_rad, &candidate)?;
+                    checker.check_settled_turn(before_course_rad, &candidate)?;
                 }
-                self.check(&candidate, &state.latches, &state.alterations)?;
+                checker.check(&candidate, &state.latches, &state.alterations)?;
             }
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
             // The heading at the piece's end (on a turn, part way round), and
@@ -347,24 +426,23 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 piece.course_rad
             };
             let turn_end_s = (start_elapsed_s + leg.turn_duration_s()).min(end_elapsed_s);
-            let steady_course_rad = steady_course_rad(
-                &[before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
-                &[
-                    before_course_rad,
-                    leg.start_course_rad,
-                    course_rad,
-                    course_rad,
-                ],
-                STEADY_COURSE_WINDOW_S,
-            )
-            .unwrap_or(course_rad);
+            let steady_course_rad = steady_through_turn(
+                [before_s, start_elapsed_s, turn_end_s, end_elapsed_s],
+                [before_course_rad, leg.start_course_rad, course_rad],
+            );
             let own_then = VesselState {
                 position_m: piece.end_m(),
                 course_rad,
                 speed_mps: piece.velocity_mps.length(),
                 ..*self.ownship()
             };
-            state.advance_reusing(&own_then, steady_course_rad, self, end_elapsed_s, &mut kept);
+            state.advance_reusing(
+                &own_then,
+                steady_course_rad,
+                &checker,
+                end_elapsed_s,
+                &mut kept,
+            );
         }
         Ok(())
     }

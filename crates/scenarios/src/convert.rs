@@ -132,13 +132,19 @@ impl Lane {
     /// Upstream end of the centre line, metres.
     #[must_use]
     pub fn from_m(&self) -> DVec2 {
-        from_nm(self.from_nm)
+        self.from_nm
+            .map(from_nm)
+            .or(self.projected.start_m)
+            .unwrap_or(DVec2::NAN)
     }
 
     /// Downstream end of the centre line, metres.
     #[must_use]
     pub fn to_m(&self) -> DVec2 {
-        from_nm(self.to_nm)
+        self.to_nm
+            .map(from_nm)
+            .or(self.projected.goal_m)
+            .unwrap_or(DVec2::NAN)
     }
 
     /// Full width, metres.

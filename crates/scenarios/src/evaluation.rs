@@ -26,17 +26,24 @@
 //! a port turn for a vessel on its port side still is (rule 17(c)). The
 //! planner applies the same reading (`vorrt_colregs::check_maneuver_acting`).
 
+use crate::chart::Chart;
 use crate::scenario::Scenario;
 use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::observed::{
-    ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack, Recording, judge,
+    NavigationalStatus, ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack,
+    Recording, TrackNoise, judge,
 };
+use vorrt_colregs::rule10::{Rule10Judgement, judge_track};
 use vorrt_colregs::{
     ComplianceViolation, Encounter, EncounterAssessment, Role, RuleParameters, ScoringParameters,
 };
 
 /// How ownship fared against one target.
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "a plain record of documented outcome flags"
+)]
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct TargetEvaluation {
     /// The target's name.
@@ -77,6 +84,15 @@ pub struct TargetEvaluation {
     /// The full assessment on the observed states (`None` when no
     /// encounter arose).
     pub assessment: Option<EncounterAssessment>,
+    /// The navigational status the target reported (tracks recorded at
+    /// sea); at anchor, moored or aground it was judged as a stationary
+    /// obstacle, on clearance alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub status: Option<NavigationalStatus>,
+    /// The encounter was unfinished when the tracks ended (still closing at
+    /// the last sample): its clearance and passing are not a verdict.
+    #[serde(default)]
+    pub undecided: bool,
 }
 
 /// How a whole run fared.
@@ -100,6 +116,23 @@ pub struct Evaluation {
     pub min_distance_m: f64,
     /// Whether every target kept `d_th`.
     pub clearance_kept: bool,
+    /// The least distance from ownship's track to land, metres (`None`:
+    /// the scenario has no land); measured along the curve sailed
+    /// ([`Chart::judge_track`]).
+    #[serde(default)]
+    pub min_land_distance_m: Option<f64>,
+    /// The clearance from land judged against (`land_clearance_m`), metres
+    /// (`None`: no land).
+    #[serde(default)]
+    pub land_clearance_m: Option<f64>,
+    /// Whether ownship's track touched or crossed land: a safety failure
+    /// beside a collision (decision 29).
+    #[serde(default)]
+    pub grounding: bool,
+    /// Whether the track kept `land_clearance_m` from land (true with no
+    /// land).
+    #[serde(default = "kept")]
+    pub land_clearance_kept: bool,
     /// No finding under the observed evaluation: no rule broken in any
     /// encounter and no track finding.
     pub compliant: bool,
@@ -143,11 +176,27 @@ pub struct Evaluation {
     pub planning_time_s: f64,
     /// Per target, in scenario order.
     pub targets: Vec<TargetEvaluation>,
+    /// Every track's jitter and the window and turn thresholds it was judged
+    /// with, ownship first (exact tracks: no jitter, the published values).
+    #[serde(default)]
+    pub noise: Vec<TrackNoise>,
+    /// Rule 10 (traffic separation schemes) on ownship's track as sailed,
+    /// its heading at every sample (the rule speaks of heading): the lane
+    /// crossings and the findings; empty without lanes and zones. A finding
+    /// makes the run not `compliant`.
+    #[serde(default)]
+    pub rule10: Rule10Judgement,
+    /// The same on the track as observed: course over ground over the
+    /// observation window, as another vessel sees it (reported, not part
+    /// of `compliant`: the COG lags a turn made just short of a lane).
+    #[serde(default)]
+    pub rule10_observed: Rule10Judgement,
 }
 
 impl Evaluation {
     /// Whether the run **succeeded**: ownship reached its goal, no hull
-    /// touched another, and every target kept the clearance `d_th`.
+    /// touched another, every target kept the clearance `d_th`, and the
+    /// track neither grounded nor came within `land_clearance_m` of land.
     /// COLREGs compliance is not part of it (see [`Self::safe_and_compliant`]).
     ///
     /// The one success criterion of a closed-loop run: `report.json`'s
@@ -156,16 +205,25 @@ impl Evaluation {
     /// exit codes all read it.
     #[must_use]
     pub fn success(&self) -> bool {
-        succeeded(self.reached_goal, self.collision, self.clearance_kept)
+        succeeded(
+            self.reached_goal,
+            self.collision || self.grounding,
+            self.clearance_kept && self.land_clearance_kept,
+        )
     }
 
-    /// Whether the tracks were **safe and compliant**: no collision, `d_th`
-    /// kept from every target, and no finding under the observed evaluation
+    /// Whether the tracks were **safe and compliant**: no collision and no
+    /// grounding, `d_th` kept from every target and `land_clearance_m`
+    /// from land, and no finding under the observed evaluation
     /// (`compliant`). Whether ownship reached a goal is not asked: recorded
     /// tracks (`vorrt judge`) need not end at one. Exit code 0 of `vorrt judge`.
     #[must_use]
     pub fn safe_and_compliant(&self) -> bool {
-        !self.collision && self.clearance_kept && self.compliant
+        !self.collision
+            && !self.grounding
+            && self.clearance_kept
+            && self.land_clearance_kept
+            && self.compliant
     }
 
     /// The evaluation as a plain-text table: one row per target, then the run's
@@ -217,6 +275,20 @@ impl Evaluation {
             self.failed_plans,
             self.planning_time_s * 1e3,
         );
+        if let (Some(distance_m), Some(clearance_m)) =
+            (self.min_land_distance_m, self.land_clearance_m)
+        {
+            let _ = writeln!(
+                text,
+                "land: min distance {distance_m:.0} m (clearance {clearance_m:.0} m): {} | grounding: {}",
+                if self.land_clearance_kept {
+                    "kept"
+                } else {
+                    "BROKEN"
+                },
+                if self.grounding { "YES" } else { "no" },
+            );
+        }
         let _ = writeln!(
             text,
             "path quality: largest rate of turn {:.2}°/s{} | {} turn reversals | {:.1}° of course change per nm{}",
@@ -231,8 +303,39 @@ impl Evaluation {
                 format!(" | {}", self.track_findings.join("; "))
             },
         );
+        if !(self.rule10.crossings.is_empty() && self.rule10.is_clean()) {
+            let worst = self
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| crossing.max_off_perpendicular_deg)
+                .fold(0.0, f64::max);
+            let findings: Vec<String> = self
+                .rule10
+                .findings
+                .iter()
+                .map(ToString::to_string)
+                .collect();
+            let _ = writeln!(
+                text,
+                "rule 10: {} lane crossings, {} square (worst {worst:.1}° off perpendicular) | {}",
+                self.rule10.crossings.len(),
+                self.rule10.square_crossings(),
+                if findings.is_empty() {
+                    "no finding".to_owned()
+                } else {
+                    findings.join("; ")
+                },
+            );
+        }
         text
     }
+}
+
+/// The default of [`Evaluation::land_clearance_kept`] in results written
+/// before it existed: no land, so kept.
+fn kept() -> bool {
+    true
 }
 
 /// [`Evaluation::success`] from its three parts, for results that keep them
@@ -288,7 +391,13 @@ pub fn evaluate_with(
         scoring: scoring_for(clearance_m),
         ..ObservedParameters::default()
     };
-    let judgement = judge(&recording_of(scenario, record), &parameters);
+    let recording = recording_of(scenario, record);
+    let judgement = judge(&recording, &parameters);
+    let noise = judgement
+        .as_ref()
+        .map(|judgement| judgement.noise.clone())
+        .unwrap_or_default();
+    let (rule10, rule10_observed) = judge_rule10(scenario, &recording, judgement.as_ref().ok());
     let (targets, path, track_findings, compliant) = match &judgement {
         Ok(judgement) => (
             judgement.targets.iter().map(target_evaluation).collect(),
@@ -307,6 +416,11 @@ pub fn evaluate_with(
             false,
         ),
     };
+    // The chart of a validated scenario always builds; one that does not
+    // (areas never validated) has no land to judge.
+    let land = Chart::from_scenario(scenario).ok().and_then(|chart| {
+        chart.judge_track(&record.times_s, &record.ownship, record.max_turn_rate_rad_s)
+    });
     let start = scenario.ownship_state().position_m;
     let straight_length_m = start.distance(scenario.ownship_goal_m());
     let speed = scenario.ownship_state().speed_mps;
@@ -335,7 +449,11 @@ pub fn evaluate_with(
             .map(|target| target.min_distance_m)
             .fold(f64::INFINITY, f64::min),
         clearance_kept: targets.iter().all(|target| target.clearance_kept),
-        compliant,
+        min_land_distance_m: land.map(|land| land.min_distance_m),
+        land_clearance_m: land.map(|land| land.clearance_m),
+        grounding: land.is_some_and(|land| land.grounding),
+        land_clearance_kept: land.is_none_or(|land| land.clearance_kept),
+        compliant: compliant && rule10.is_clean(),
         max_turn_rate_deg_s: path.map_or(0.0, |path| path.max_turn_rate_deg_s),
         turn_rate_limit_deg_s: record.max_turn_rate_rad_s.map(f64::to_degrees),
         turn_reversals: path.map_or(0, |path| path.turn_reversals),
@@ -353,7 +471,37 @@ pub fn evaluate_with(
         rule_departures: record.rule_departures(),
         planning_time_s: record.planning_time_s(),
         targets,
+        noise,
+        rule10,
+        rule10_observed,
     }
+}
+
+/// Rule 10 on ownship's track, as sailed (the recorded headings; the
+/// course over ground where the recording has none) and as observed,
+/// against the scenario's scheme.
+fn judge_rule10(
+    scenario: &Scenario,
+    recording: &Recording,
+    judgement: Option<&ObservedJudgement>,
+) -> (Rule10Judgement, Rule10Judgement) {
+    let scheme = scenario.traffic_scheme();
+    if scheme.is_empty() {
+        return (Rule10Judgement::default(), Rule10Judgement::default());
+    }
+    let observed: Vec<f64> = judgement.map_or_else(Vec::new, |judgement| {
+        judgement
+            .ownship
+            .iter()
+            .map(|over| over.course_rad)
+            .collect()
+    });
+    let own = &recording.ownship;
+    let sailed = own.courses_rad.as_ref().unwrap_or(&observed);
+    (
+        judge_track(&scheme, &recording.times_s, &own.positions_m, sailed),
+        judge_track(&scheme, &recording.times_s, &own.positions_m, &observed),
+    )
 }
 
 /// The observed judgement of a run, for callers that want more than the
@@ -377,11 +525,15 @@ pub fn observed_judgement(
 /// The recorded tracks of a run, as the observed judgement reads them:
 /// positions and recorded courses of every vessel on the run's time base.
 fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
-    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64| RecordedTrack {
-        name: name.to_owned(),
-        length_m: states.first().map_or(length_m, |state| state.length_m),
-        positions_m: states.iter().map(|state| state.position_m).collect(),
-        courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+    let observation = |index: usize| record.observations.get(index).copied().unwrap_or_default();
+    let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64, index: usize| {
+        RecordedTrack {
+            name: name.to_owned(),
+            length_m: states.first().map_or(length_m, |state| state.length_m),
+            positions_m: states.iter().map(|state| state.position_m).collect(),
+            courses_rad: Some(states.iter().map(|state| state.course_rad).collect()),
+            observation: observation(index),
+        }
     };
     Recording {
         times_s: record.times_s.clone(),
@@ -389,6 +541,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             &scenario.ownship.name,
             &record.ownship,
             scenario.ownship.length_m,
+            0,
         ),
         targets: record
             .targets
@@ -397,7 +550,7 @@ fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
             .map(|(index, states)| {
                 let name = record.target_names.get(index).map_or("", String::as_str);
                 let length_m = scenario.targets.get(index).map_or(1.0, |t| t.length_m);
-                track(name, states, length_m)
+                track(name, states, length_m, index + 1)
             })
             .collect(),
     }
@@ -424,5 +577,7 @@ fn target_evaluation(observed: &ObservedEncounter) -> TargetEvaluation {
         max_alteration_deg: assessment.map(|a| a.max_course_change_rad.to_degrees()),
         score: observed.score,
         assessment: assessment.cloned(),
+        status: observed.status,
+        undecided: observed.undecided,
     }
 }

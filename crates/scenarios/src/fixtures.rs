@@ -1,6 +1,7 @@
 //! The bundled scenarios, embedded in the library: the paper's reference
-//! encounters (`paper`), the 22 Imazu problems (`imazu`) and a geographic
-//! scenario imported from AIS (`geo`). Their files are this crate's
+//! encounters (`paper`), the 22 Imazu problems (`imazu`), a geographic
+//! scenario imported from AIS (`geo`) and coastal encounters with land
+//! (`coastal`). Their files are this crate's
 //! `fixtures/<group>/<file>`; they are compiled in so that a program using
 //! them (`vorrt demo`) needs no checkout beside it. A test checks that every
 //! `*.ron` file of those folders is in [`BUNDLED`] with the same text.
@@ -25,6 +26,10 @@ pub struct Fixture {
     pub file: &'static str,
     /// Its text.
     pub text: &'static str,
+    /// The text of the `GeoJSON` file its `land_geojson` names (a real
+    /// coastline beside it in `fixtures/<group>/`), embedded too; `None`
+    /// without one.
+    pub land_geojson: Option<&'static str>,
 }
 
 impl Fixture {
@@ -58,7 +63,11 @@ impl Fixture {
     /// None for the bundled files (a test loads each one); the error type is
     /// that of [`Scenario::from_ron_str`].
     pub fn load(&self) -> Result<Scenario, ScenarioError> {
-        Scenario::from_ron_str(self.text, &self.source())
+        match self.land_geojson {
+            // Its coastline comes embedded too: inline land, no file read.
+            Some(land) => Scenario::from_ron_str_with_land_geojson(self.text, &self.source(), land),
+            None => Scenario::from_ron_str(self.text, &self.source()),
+        }
     }
 }
 
@@ -68,6 +77,15 @@ macro_rules! fixture {
             group: $group,
             file: $file,
             text: include_str!(concat!("../fixtures/", $group, "/", $file)),
+            land_geojson: None,
+        }
+    };
+    ($group:literal, $file:literal, $land:literal) => {
+        Fixture {
+            group: $group,
+            file: $file,
+            text: include_str!(concat!("../fixtures/", $group, "/", $file)),
+            land_geojson: Some(include_str!(concat!("../fixtures/", $group, "/", $land))),
         }
     };
 }
@@ -103,6 +121,23 @@ pub const BUNDLED: &[Fixture] = &[
     fixture!("imazu", "imazu_21.ron"),
     fixture!("imazu", "imazu_22.ron"),
     fixture!("geo", "channel_ais.ron"),
+    fixture!("coastal", "crossing_coast.ron"),
+    fixture!(
+        "coastal",
+        "dover_tss_crossing.ron",
+        "dover_strait_ne10m.geojson"
+    ),
+    fixture!("coastal", "island.ron"),
+    fixture!(
+        "coastal",
+        "kent_coast_head_on.ron",
+        "dover_strait_ne10m.geojson"
+    ),
+    fixture!(
+        "coastal",
+        "new_york_narrows_approach.ron",
+        "new_york_harbor_ne10m.geojson"
+    ),
 ];
 
 /// The bundled fixture called `name`: `<group>/<file>` with or without the
@@ -134,7 +169,7 @@ mod tests {
     fn every_fixture_file_is_embedded() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
         let mut on_disk = Vec::new();
-        for group in ["paper", "imazu", "geo"] {
+        for group in ["paper", "imazu", "geo", "coastal"] {
             let mut files: Vec<String> = std::fs::read_dir(root.join(group))
                 .expect("fixture folder")
                 .map(|entry| {
@@ -159,6 +194,26 @@ mod tests {
         assert_eq!(embedded, on_disk);
         // The folder the crate's path helper names is the one embedded.
         assert_eq!(crate::io::bundled_fixtures_dir(), root);
+    }
+
+    /// A fixture with an embedded coastline loads the same land as its
+    /// file does from disk, beside its `GeoJSON`.
+    #[test]
+    fn embedded_coastline_is_the_file_beside_it() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
+        let with_land: Vec<_> = BUNDLED
+            .iter()
+            .filter(|f| f.land_geojson.is_some())
+            .collect();
+        assert_eq!(with_land.len(), 3);
+        for fixture in with_land {
+            let embedded = fixture.load().expect("valid");
+            let from_disk =
+                Scenario::load(&root.join(fixture.group).join(fixture.file)).expect("valid");
+            assert!(from_disk.land_geojson.is_some() && embedded.land_geojson.is_none());
+            assert!(!embedded.land.is_empty());
+            assert_eq!(embedded.land, from_disk.geojson_land, "{}", fixture.name());
+        }
     }
 
     #[test]
@@ -186,6 +241,7 @@ mod tests {
         assert_eq!(group("paper").count(), 5);
         assert_eq!(group("imazu").count(), 22);
         assert_eq!(group("geo").count(), 1);
+        assert_eq!(group("coastal").count(), 5);
         assert_eq!(group("golden").count(), 0);
     }
 }

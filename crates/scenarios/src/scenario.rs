@@ -3,12 +3,15 @@
 //! Field names carry their units (`_nm`, `_m`, `_kn`, `_deg`, `_s`); positions
 //! are `(east, north)` tuples. See `docs/scenario-format.md` for the format.
 
+use crate::area::{Area, DEFAULT_LAND_CLEARANCE_M};
 use crate::geo::{
     LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions, check_lat_lon, parse_utc_time,
 };
 use crate::planner_settings::PlannerSettings;
 use crate::recorded_tracks::RecordedTracks;
+use crate::scheme::{Rule10Settings, SeparationZoneSpec};
 use serde::{Deserialize, Serialize};
+use std::path::PathBuf;
 use time::OffsetDateTime;
 use vorrt_geometry::{DVec2, units};
 
@@ -41,6 +44,40 @@ pub struct Scenario {
     /// Traffic lanes of a traffic separation scheme (rule 10), if any.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub lanes: Vec<Lane>,
+    /// Land: islands and coasts ownship keeps `land_clearance_m` from
+    /// (decision 29). See [`Area`].
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub land: Vec<Area>,
+    /// Areas ownship must keep out of (an exercise area, a wreck): no
+    /// clearance beyond its own hull. See [`Area`].
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub no_go: Vec<Area>,
+    /// A `GeoJSON` file (RFC 7946) whose polygons are added to `land`
+    /// (geographic scenarios only). A relative path is resolved from the
+    /// scenario file's directory ([`Scenario::load`]), or from the current
+    /// directory for a scenario read from text ([`Scenario::from_ron_str`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub land_geojson: Option<String>,
+    /// The distance ownship's track keeps from land, metres (>= 0); default
+    /// [`DEFAULT_LAND_CLEARANCE_M`]. The planner keeps half ownship's length
+    /// more, so that its hull keeps it too.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub land_clearance_m: Option<f64>,
+    /// The polygons read from `land_geojson`, validated and projected like
+    /// `land`: derived by [`Scenario::validate`], not part of the file.
+    #[serde(skip)]
+    pub geojson_land: Vec<Area>,
+    /// The directory a relative `land_geojson` is resolved from: set by
+    /// [`Scenario::load`] (the file's directory); `None` is the current
+    /// directory. Not part of the file.
+    #[serde(skip)]
+    pub base_dir: Option<PathBuf>,
+    /// Separation zones of the scheme (rule 10(e)), if any.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub separation_zones: Vec<SeparationZoneSpec>,
+    /// Rule 10's tolerances; absent fields take the defaults (decision 30).
+    #[serde(default, skip_serializing_if = "Rule10Settings::is_empty")]
+    pub rule10: Rule10Settings,
     /// The planner seed to use when none is given elsewhere.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
@@ -79,6 +116,14 @@ impl PartialEq for Scenario {
             planner,
             simulation,
             lanes,
+            land,
+            no_go,
+            land_geojson,
+            land_clearance_m,
+            geojson_land: _,
+            base_dir: _,
+            separation_zones,
+            rule10,
             seed,
             start_time,
             source: _,
@@ -92,6 +137,12 @@ impl PartialEq for Scenario {
             && *planner == other.planner
             && *simulation == other.simulation
             && *lanes == other.lanes
+            && *land == other.land
+            && *no_go == other.no_go
+            && *land_geojson == other.land_geojson
+            && *land_clearance_m == other.land_clearance_m
+            && *separation_zones == other.separation_zones
+            && *rule10 == other.rule10
             && *seed == other.seed
             && *start_time == other.start_time
             && *recorded_tracks == other.recorded_tracks
@@ -100,6 +151,43 @@ impl PartialEq for Scenario {
 }
 
 impl Scenario {
+    /// A scenario called `name` with `ownship` and nothing else: no targets,
+    /// default planner and simulation settings, no lanes, no land, no seed.
+    /// Not yet validated ([`Scenario::validate`]).
+    ///
+    /// ```
+    /// use vorrt_scenarios::{Scenario, VesselSpec};
+    /// let own = VesselSpec::new("own", (0.0, 0.0), 0.0, 10.0, 50.0).with_goal_nm((0.0, 4.0));
+    /// let mut scenario = Scenario::new("empty sea", own);
+    /// scenario.validate().unwrap();
+    /// assert!(scenario.targets.is_empty() && scenario.land.is_empty());
+    /// ```
+    #[must_use]
+    pub fn new(name: impl Into<String>, ownship: VesselSpec) -> Self {
+        Self {
+            name: name.into(),
+            description: None,
+            ownship,
+            targets: Vec::new(),
+            planner: PlannerSettings::default(),
+            simulation: SimulationSettings::default(),
+            lanes: Vec::new(),
+            land: Vec::new(),
+            no_go: Vec::new(),
+            land_geojson: None,
+            land_clearance_m: None,
+            geojson_land: Vec::new(),
+            base_dir: None,
+            separation_zones: Vec::new(),
+            rule10: crate::scheme::Rule10Settings::default(),
+            seed: None,
+            start_time: None,
+            source: String::new(),
+            recorded_tracks: None,
+            recorded: RecordedTracks::default(),
+        }
+    }
+
     /// Whether the scenario places its vessels in latitude and longitude
     /// (ownship has a `start_lat_lon`).
     #[must_use]
@@ -114,6 +202,18 @@ impl Scenario {
         self.ownship
             .start_lat_lon
             .map(|(lat_deg, lon_deg)| LocalFrame::new(lat_deg, lon_deg))
+    }
+
+    /// The distance ownship's track keeps from land, metres:
+    /// `land_clearance_m`, or [`DEFAULT_LAND_CLEARANCE_M`].
+    #[must_use]
+    pub fn land_clearance_m(&self) -> f64 {
+        self.land_clearance_m.unwrap_or(DEFAULT_LAND_CLEARANCE_M)
+    }
+
+    /// Every land area: `land`, then the polygons of `land_geojson`.
+    pub fn land_areas(&self) -> impl Iterator<Item = &Area> {
+        self.land.iter().chain(&self.geojson_land)
     }
 
     /// The `start_time`, in UTC, if the scenario has a valid one.
@@ -139,12 +239,6 @@ impl Scenario {
             }
             None => None,
         };
-        if frame.is_some() && !self.lanes.is_empty() {
-            return Err((
-                "lanes".into(),
-                "are given in a geographic scenario: traffic lanes are only supported in local scenarios (start_nm/start_m)".into(),
-            ));
-        }
         project_vessel(&mut self.ownship, "ownship", frame.as_ref())?;
         for (index, target) in self.targets.iter_mut().enumerate() {
             let who = format!("targets[{index}] {:?}", target.name);
@@ -496,17 +590,31 @@ impl SimulationSettings {
 }
 
 /// One traffic lane of a traffic separation scheme: a strip `width_nm` wide
-/// centred on the line from `from_nm` to `to_nm`, traffic flowing from `from`
-/// toward `to`.
+/// centred on the line from `from_nm` to `to_nm` (in a geographic scenario
+/// `from_lat_lon` to `to_lat_lon`), traffic flowing from `from` toward `to`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Lane {
     /// Name, e.g. `"westbound"`.
     pub name: String,
-    /// Upstream end of the centre line `(east, north)`, nautical miles.
-    pub from_nm: (f64, f64),
+    /// Upstream end of the centre line `(east, north)`, nautical miles
+    /// (local scenarios).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_nm: Option<(f64, f64)>,
     /// Downstream end of the centre line `(east, north)`, nautical miles.
-    pub to_nm: (f64, f64),
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_nm: Option<(f64, f64)>,
+    /// Upstream end `(latitude, longitude)`, degrees WGS84 (geographic
+    /// scenarios).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from_lat_lon: Option<(f64, f64)>,
+    /// Downstream end `(latitude, longitude)`, degrees WGS84.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_lat_lon: Option<(f64, f64)>,
+    /// `from_lat_lon` (as `start_m`) and `to_lat_lon` (as `goal_m`) in the
+    /// local frame: derived by [`Scenario::validate`], not part of the file.
+    #[serde(skip)]
+    pub projected: ProjectedPositions,
     /// Full width of the lane, nautical miles (> 0).
     pub width_nm: f64,
 }

@@ -4,7 +4,6 @@ use crate::error::ScenarioError;
 use crate::planner_settings::describe_config_error;
 use crate::scenario::{Behaviour, Lane, Scenario, VesselSpec};
 use vorrt_colregs::rules;
-use vorrt_geometry::DVec2;
 use vorrt_planner::error::Readable;
 use vorrt_planner::{PlannerConfig, Turning};
 
@@ -51,7 +50,7 @@ impl Who<'_> {
 }
 
 /// The start field a vessel uses.
-fn start_field(vessel: &VesselSpec) -> &'static str {
+pub(crate) fn start_field(vessel: &VesselSpec) -> &'static str {
     if vessel.start_nm.is_some() {
         "start_nm"
     } else if vessel.start_m.is_some() {
@@ -103,6 +102,7 @@ impl Scenario {
             }
         }
         self.check_geographic().map_err(|(f, p)| invalid(f, p))?;
+        crate::area::check_areas(self).map_err(|(f, p)| invalid(f, p))?;
         check_vessel(&mut self.ownship, Who::Ownship).map_err(|(f, p)| invalid(f, p))?;
         if self.targets.len() > MAX_TARGETS {
             return Err(invalid(
@@ -125,12 +125,19 @@ impl Scenario {
         self.check_route(&config).map_err(|(f, p)| invalid(f, p))?;
         self.check_clearance(&config)
             .map_err(|(f, p)| invalid(f, p))?;
+        self.check_goal_clear(&config)
+            .map_err(|(f, p)| invalid(f, p))?;
         // Long ships can touch beyond the clearance.
         self.check_hulls_apart().map_err(|(f, p)| invalid(f, p))?;
         self.check_simulation().map_err(|(f, p)| invalid(f, p))?;
+        // The scheme last: its lanes and zones are projected with the frame
+        // the vessels were (decision 30).
+        let frame = self.local_frame();
+        crate::scheme::check_scheme(self, frame.as_ref()).map_err(|(f, p)| invalid(f, p))?;
         for (index, lane) in self.lanes.iter().enumerate() {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
         }
+        crate::chart::check_off_land(self).map_err(|(f, p)| invalid(f, p))?;
         self.check_recorded_field()
             .map_err(|(f, p)| invalid(f, p))?;
         Ok(())
@@ -334,6 +341,52 @@ impl Scenario {
         Ok(())
     }
 
+    /// No target that never moves (at anchor: speed 0, or its goal where it
+    /// starts; a `Noisy` target's speed wanders, so it moves) lies nearer
+    /// ownship's goal than the distance ownship must keep from it (`d_th`
+    /// plus their contact range, as the planner keeps it:
+    /// `SafetyChecker::required_distance_m`). No plan can then end at the
+    /// goal, and a run would only fail every plan and sail on past it
+    /// (issue 24; decision 33).
+    fn check_goal_clear(&self, config: &PlannerConfig) -> Result<(), (String, String)> {
+        let Some(goal) = self.ownship.goal_position_m() else {
+            return Ok(());
+        };
+        let goal_field = if self.ownship.goal_nm.is_some() {
+            "goal_nm"
+        } else if self.ownship.goal_m.is_some() {
+            "goal_m"
+        } else {
+            "goal_lat_lon"
+        };
+        for (index, target) in self.targets.iter().enumerate() {
+            let start = target.start_position_m();
+            let at_rest = !matches!(target.behaviour, crate::Behaviour::Noisy { .. })
+                && (target.speed_kn == 0.0
+                    || (target.behaviour.announces_goal()
+                        && target.goal_position_m() == Some(start)));
+            if !at_rest {
+                continue;
+            }
+            let required_m =
+                config.clearance_m + rules::contact_range_m(self.ownship.length_m, target.length_m);
+            let range_m = goal.distance(start);
+            if range_m < required_m {
+                return Err((
+                    Who::Target(index, &target.name).field(start_field(target)),
+                    format!(
+                        "lies at rest {} m from ownship's goal (ownship.{goal_field}), nearer than the {} m ownship must keep from it (planner clearance {} m plus half the two lengths): no plan can reach that goal; move ownship's goal at least {} m from the vessel",
+                        Readable(range_m.round()),
+                        Readable(required_m.round()),
+                        Readable(config.clearance_m),
+                        Readable(required_m.ceil()),
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn check_simulation(&self) -> Result<(), (String, String)> {
         let settings = &self.simulation;
         let positive = [
@@ -530,10 +583,8 @@ fn check_ownship(ownship: &VesselSpec) -> Result<(), (String, String)> {
 fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
     let field = |name: &str| format!("lanes[{index}] {:?}.{name}", lane.name);
     check_name(&lane.name).map_err(|problem| (field("name"), problem))?;
-    check_position(Who::Ownship, "", Some(lane.from_nm), 1.0)
-        .map_err(|(_, p)| (field("from_nm"), p))?;
-    check_position(Who::Ownship, "", Some(lane.to_nm), 1.0)
-        .map_err(|(_, p)| (field("to_nm"), p))?;
+    check_position(Who::Ownship, "", lane.from_nm, 1.0).map_err(|(_, p)| (field("from_nm"), p))?;
+    check_position(Who::Ownship, "", lane.to_nm, 1.0).map_err(|(_, p)| (field("to_nm"), p))?;
     if !(lane.width_nm.is_finite() && lane.width_nm > 0.0 && lane.width_nm <= MAX_EXTENT_NM) {
         return Err((
             field("width_nm"),
@@ -543,10 +594,16 @@ fn check_lane(index: usize, lane: &Lane) -> Result<(), (String, String)> {
             ),
         ));
     }
-    if DVec2::from(lane.from_nm) == DVec2::from(lane.to_nm) {
+    // Ends were projected (geographic) or checked above by now.
+    if lane.from_m() == lane.to_m() {
+        let name = if lane.to_nm.is_some() {
+            "to_nm"
+        } else {
+            "to_lat_lon"
+        };
         return Err((
-            field("to_nm"),
-            "is the same point as from_nm: a lane needs a direction".into(),
+            field(name),
+            "is the same point as the lane's other end: a lane needs a direction".into(),
         ));
     }
     Ok(())

@@ -213,6 +213,41 @@ fn ownship_within_clearance_of_a_target_is_rejected() {
 }
 
 #[test]
+fn a_vessel_at_rest_on_ownships_goal_is_rejected() {
+    // TS3 lies at anchor 0.05 nm (93 m) from ownship's goal: ownship must keep
+    // 200 m + (100 + 200) / 2 m = 350 m from it, so no plan can end there.
+    let anchored = "Vessel(name: \"TS3\", start_nm: (0.05, 3.0), course_deg: 180.0, speed_kn: 0.0,\n               length_m: 200.0, goal_nm: (0.0, -4.5))";
+    let original = "Vessel(name: \"TS3\", start_nm: (0.0, 3.5), course_deg: 180.0, speed_kn: 10.0,\n               length_m: 200.0, goal_nm: (0.0, -4.5))";
+    let (field, message) = invalid(&with(original, anchored));
+    assert_eq!(field, "targets[2] \"TS3\".start_nm");
+    assert!(message.contains("ownship.goal_nm"), "{message}");
+    assert!(message.contains("350 m"), "{message}");
+    // Its goal where it starts: it never moves either.
+    let (field, _) = invalid(&with(
+        original,
+        &anchored
+            .replace("speed_kn: 0.0", "speed_kn: 10.0")
+            .replace("goal_nm: (0.0, -4.5)", "goal_nm: (0.05, 3.0)"),
+    ));
+    assert_eq!(field, "targets[2] \"TS3\".start_nm");
+    // At rest 0.2 nm (370 m) off the goal, it can be passed at d_th.
+    Scenario::from_ron_str(
+        &with(original, &anchored.replace("(0.05, 3.0)", "(0.2, 3.0)")),
+        "ok.ron",
+    )
+    .expect("370 m from the goal, beyond the 350 m kept");
+    // A moving target that only passes near the goal is no obstacle to it.
+    Scenario::from_ron_str(
+        &with(
+            original,
+            &anchored.replace("speed_kn: 0.0", "speed_kn: 10.0"),
+        ),
+        "ok.ron",
+    )
+    .expect("moves on");
+}
+
+#[test]
 fn bad_lanes_are_rejected() {
     let (field, _) = invalid(&with("width_nm: 1.0", "width_nm: 0.0"));
     assert_eq!(field, "lanes[0] \"westbound\".width_nm");

@@ -13,8 +13,8 @@ use rand_core::{RngCore, SeedableRng};
 use std::time::Instant;
 use vorrt_planner::{PlannerError, PlanningProblem};
 use vorrt_scenarios::{
-    Behaviour, Lane, MAX_TARGETS, PlannerSettings, ProjectedPositions, Scenario, ScenarioError,
-    SimulationSettings, VesselSpec,
+    Behaviour, Lane, MAX_TARGETS, PlannerSettings, ProjectedPositions, Rule10Settings, Scenario,
+    ScenarioError, SeparationZoneSpec, SimulationSettings, VesselSpec,
 };
 
 const CASES: u64 = 256;
@@ -184,11 +184,26 @@ impl Gen {
             _ => self.below_usize(5),
         };
         let lanes = (0..self.below_usize(3))
-            .map(|index| Lane {
-                name: self.name(index),
-                from_nm: (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
-                to_nm: (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
-                width_nm: self.mostly(-1.0, 3.0),
+            .map(|index| {
+                Lane::new_nm(
+                    self.name(index),
+                    (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
+                    (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)),
+                    self.mostly(-1.0, 3.0),
+                )
+            })
+            .collect();
+        let zones = if self.chance(20) {
+            self.below_usize(2)
+        } else {
+            0
+        };
+        let separation_zones = (0..zones)
+            .map(|index| {
+                let vertices = (0..self.below_usize(5))
+                    .map(|_| (self.mostly(-5.0, 5.0), self.mostly(-5.0, 5.0)))
+                    .collect();
+                SeparationZoneSpec::new_nm(self.name(index), vertices)
             })
             .collect();
         Scenario {
@@ -211,6 +226,21 @@ impl Gen {
                 replan_deviation_m: self.mostly(0.0, 200.0),
             },
             lanes,
+            land: Vec::new(),
+            no_go: Vec::new(),
+            land_geojson: None,
+            land_clearance_m: None,
+            geojson_land: Vec::new(),
+            base_dir: None,
+            separation_zones,
+            rule10: Rule10Settings {
+                crossing_tolerance_deg: if self.chance(10) {
+                    self.opt(-10.0, 60.0)
+                } else {
+                    None
+                },
+                flow_tolerance_deg: None,
+            },
             seed: Some(self.0.next_u64()),
             start_time: None,
             source: "generated.ron".into(),

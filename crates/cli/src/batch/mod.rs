@@ -51,7 +51,7 @@ impl GeneratorArgs {
                     ));
                 }
                 let targets = self.targets.ok_or_else(|| {
-                    CliError::BadInput("open sea needs --targets N (1 to 64)".into())
+                    CliError::BadInput("open sea needs --targets N (1 to 256)".into())
                 })?;
                 Ok(GeneratorSpec::OpenSea(
                     OpenSeaSpec::with_targets(targets).with_behaviour(behaviour),
@@ -115,7 +115,7 @@ pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
 }
 
 /// The scenarios of a batch or of `generate`, refused when there are none.
-fn items_of(
+pub(crate) fn items_of(
     args: &GeneratorArgs,
     kind: Option<Kind>,
     dir: Option<&Path>,
@@ -140,7 +140,7 @@ fn items_of(
     if items.is_empty() {
         let what = match dir {
             Some(dir) if kind.is_none() => {
-                format!("{} holds no scenario files (*.ron)", dir.display())
+                format!("{} holds no scenario files (*.ron, *.json)", dir.display())
             }
             _ => format!("--count {} makes no scenario", args.count),
         };
@@ -493,5 +493,24 @@ pub(crate) fn summary_table(summary: &BatchSummary) -> String {
         "failed plans         {} in {} runs",
         summary.failed_plans, summary.runs_with_failed_plans
     );
+    if summary.lane_crossings > 0 || summary.runs_with_rule10_findings > 0 {
+        let p = &summary.crossing_off_perpendicular_deg;
+        let _ = writeln!(
+            text,
+            "rule 10              {} lane crossings, {} square; off perpendicular ° p50 {} p99 {} max {}",
+            summary.lane_crossings,
+            summary
+                .lane_crossing_square_rate
+                .map_or_else(|| "-".to_owned(), percent),
+            number(p.p50, 1),
+            number(p.p99, 1),
+            number(p.max, 1)
+        );
+        let _ = writeln!(
+            text,
+            "rule 10 findings     in {} runs; separation zone entered in {} runs",
+            summary.runs_with_rule10_findings, summary.runs_with_separation_zone_entry
+        );
+    }
     text
 }

@@ -4,6 +4,7 @@
 //! given, or one synthesized from the tracks with stated defaults).
 
 use crate::error::CliError;
+use crate::judge::observation::{self, VesselObservation};
 use crate::judge::resample::{self, Clock, Gap, MIN_INTERVAL_FRACTION, Prepared, Sampled};
 use crate::judge::tracks::{Place, Track, Tracks};
 use serde::{Deserialize, Serialize};
@@ -31,9 +32,12 @@ pub(crate) struct Options {
     pub(crate) goal_tolerance_m: f64,
     /// The length of a vessel neither the tracks nor the scenario give, metres.
     pub(crate) default_length_m: f64,
-    /// Ownship's rate-of-turn limit, degrees per second (default: the
-    /// planner's, from ownship's length and speed).
+    /// Ownship's rate-of-turn limit, degrees per second (default: from its
+    /// length where known, else none: the rate is reported, not judged).
     pub(crate) max_turn_rate_deg_s: Option<f64>,
+    /// A fix farther from the last kept than this speed allows is a jump,
+    /// rejected, knots.
+    pub(crate) max_speed_kn: f64,
 }
 
 /// One judged vessel, as the input described it.
@@ -92,6 +96,8 @@ pub(crate) struct Input {
     pub(crate) assumptions: Vec<String>,
     /// What the readers skipped.
     pub(crate) notes: Vec<String>,
+    /// Every judged vessel as observed (jumps, jitter, status), ownship first.
+    pub(crate) observation: Vec<VesselObservation>,
 }
 
 /// A run rebuilt from tracks, ready for `vorrt_scenarios::evaluate`.
@@ -312,23 +318,14 @@ pub(crate) fn rebuild(
     let file = options.tracks_file.clone();
     let mut assumptions = Vec::new();
     let mut left_out = Vec::new();
-    let start_time = to_relative_times(&mut tracks);
+    let start_time = crate::judge::tracks::to_relative_times(&mut tracks);
     let list = &tracks.tracks;
     let own = ownship_index(list, options, scenario.as_ref(), &mut assumptions)?;
     let frame = frame_for(list, own, scenario.as_ref(), options)?;
-    let own_prepared = Prepared::new(&list[own], frame.as_ref());
-    if own_prepared.times_s.len() < 2 {
-        return Err(bad(format!(
-            "{file}: ownship {:?} has {} fix(es) at distinct times; at least 2 are needed",
-            list[own].name,
-            own_prepared.times_s.len()
-        )));
-    }
     let order = target_order(list, own, scenario.as_ref());
-    let prepared: Vec<(usize, Prepared)> = order
-        .iter()
-        .map(|&index| (index, Prepared::new(&list[index], frame.as_ref())))
-        .collect();
+    let speed = (file.as_str(), options.max_speed_kn);
+    let (own_prepared, prepared, jumps) =
+        observation::prepare(list, own, &order, frame.as_ref(), speed)?;
     let (span, kept) = interval(&own_prepared, &prepared, &mut left_out);
     let targets: Vec<&(usize, Prepared)> = prepared
         .iter()
@@ -341,9 +338,10 @@ pub(crate) fn rebuild(
         .iter()
         .flat_map(|vessel| resample::gaps(vessel, &clock, options.max_gap_s))
         .collect();
-    let judged_tracks: Vec<&Track> = std::iter::once(&list[own])
-        .chain(targets.iter().map(|(index, _)| &list[*index]))
+    let judged_indexes: Vec<usize> = std::iter::once(own)
+        .chain(targets.iter().map(|(index, _)| *index))
         .collect();
+    let judged_tracks: Vec<&Track> = judged_indexes.iter().map(|index| &list[*index]).collect();
     let sampled: Vec<Sampled> = vessels
         .iter()
         .map(|vessel| resample::sample(vessel, &clock))
@@ -356,6 +354,9 @@ pub(crate) fn rebuild(
         options,
         &mut assumptions,
     );
+    let (observations, observed) =
+        observation::observe_all(list, &judged_indexes, &vessels, &jumps);
+    let own_length_known = inputs[0].length_from != "default";
     let judged = Judged {
         tracks: judged_tracks,
         sampled,
@@ -366,8 +367,14 @@ pub(crate) fn rebuild(
         Some(scenario) => with_judged_targets(scenario, &judged, &mut left_out),
         None => synthesized_scenario(&file, &judged, &clock, start_time.clone(), &mut assumptions)?,
     };
-    let (config, max_turn_rate_rad_s) = judging_config(&mut scenario, options, &mut assumptions)?;
-    let record = recorded_run(
+    let (config, max_turn_rate_rad_s) = judging_config(
+        &mut scenario,
+        &judged,
+        (own_length_known, scenario_file.is_some()),
+        options,
+        &mut assumptions,
+    )?;
+    let mut record = recorded_run(
         &scenario,
         &clock,
         &judged,
@@ -375,6 +382,7 @@ pub(crate) fn rebuild(
         max_turn_rate_rad_s,
         options.goal_tolerance_m,
     );
+    record.observations = observations;
     let input = Input {
         tracks_file: file,
         tracks_format: tracks.format.to_owned(),
@@ -389,40 +397,13 @@ pub(crate) fn rebuild(
         left_out,
         assumptions,
         notes: tracks.notes,
+        observation: observed,
     };
     Ok(Rebuilt {
         scenario,
         record,
         input,
     })
-}
-
-/// Shifts absolute fix times (Unix seconds) so that the earliest fix is at
-/// second 0; returns that instant as ISO 8601 UTC (`None` for relative times).
-fn to_relative_times(tracks: &mut Tracks) -> Option<String> {
-    if !tracks.absolute_times {
-        return None;
-    }
-    let base = tracks
-        .tracks
-        .iter()
-        .flat_map(|track| &track.fixes)
-        .map(|fix| fix.time_s)
-        .fold(f64::INFINITY, f64::min);
-    if !base.is_finite() {
-        return None;
-    }
-    for fix in tracks.tracks.iter_mut().flat_map(|track| &mut track.fixes) {
-        fix.time_s -= base;
-    }
-    #[expect(
-        clippy::cast_possible_truncation,
-        reason = "a finite UNIX time in nanoseconds is far inside i128 (and the cast saturates)"
-    )]
-    let base_ns = (base * 1e9).round() as i128;
-    time::OffsetDateTime::from_unix_timestamp_nanos(base_ns)
-        .ok()
-        .map(vorrt_scenarios::geo::format_utc_time)
 }
 
 /// Every judged vessel as the input described it, with its length in metres:
@@ -572,6 +553,14 @@ fn synthesized_scenario(
         planner: PlannerSettings::default(),
         simulation: SimulationSettings::default(),
         lanes: Vec::new(),
+        land: Vec::new(),
+        no_go: Vec::new(),
+        land_geojson: None,
+        land_clearance_m: None,
+        geojson_land: Vec::new(),
+        base_dir: None,
+        separation_zones: Vec::new(),
+        rule10: vorrt_scenarios::Rule10Settings::default(),
         seed: None,
         start_time,
         source: format!("{file} (scenario synthesized by vorrt judge)"),
@@ -582,12 +571,16 @@ fn synthesized_scenario(
 
 /// The planner configuration the tracks are judged with (`--d-th` applied to
 /// `scenario` first) and ownship's rate-of-turn limit, radians per second
-/// (`--max-turn-rate`, else the planner's for ownship's length and speed).
+/// (`--max-turn-rate-deg-s`, else the given scenario's, the limit ownship
+/// sailed under, else from its length where known:
+/// [`observation::turn_rate_limit`]).
 ///
 /// # Errors
 /// [`CliError::BadInput`] when the scenario's planner settings are invalid.
 fn judging_config(
     scenario: &mut Scenario,
+    judged: &Judged<'_>,
+    (own_length_known, scenario_given): (bool, bool),
     options: &Options,
     assumptions: &mut Vec<String>,
 ) -> Result<(PlannerConfig, Option<f64>), CliError> {
@@ -603,12 +596,26 @@ fn judging_config(
             config.clearance_m
         ));
     }
-    let max_turn_rate_rad_s = match options.max_turn_rate_deg_s {
-        Some(rate) => Some(rate.to_radians()),
-        None => config
-            .turning
-            .max_turn_rate_rad_s(scenario.ownship.length_m, scenario.ownship.speed_mps()),
-    };
+    let largest_speed_mps = judged.sampled[0]
+        .speeds_mps
+        .iter()
+        .copied()
+        .fold(0.0, f64::max);
+    let scenario_rate_deg_s = scenario_given
+        .then(|| {
+            config
+                .turning
+                .max_turn_rate_rad_s(scenario.ownship.length_m, scenario.ownship.speed_mps())
+        })
+        .flatten()
+        .map(f64::to_degrees);
+    let (max_turn_rate_rad_s, said) = observation::turn_rate_limit(
+        options.max_turn_rate_deg_s.or(scenario_rate_deg_s),
+        judged.lengths_m[0],
+        own_length_known,
+        largest_speed_mps,
+    );
+    assumptions.push(said);
     Ok((config, max_turn_rate_rad_s))
 }
 
@@ -667,6 +674,7 @@ fn recorded_run(
         plans_kept: Vec::new(),
         config,
         max_turn_rate_rad_s,
+        observations: Vec::new(),
         reached_goal: arrival_time_s.is_some(),
         arrival_time_s,
     }

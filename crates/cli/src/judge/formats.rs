@@ -134,6 +134,7 @@ fn lat_lon_fixes(
             place: Place::LatLon(*lat_deg, *lon_deg),
             course_deg: None,
             speed_kn: None,
+            status: None,
         });
     }
     Ok(fixes)
@@ -249,6 +250,9 @@ pub(crate) fn read_ais(file: &str, text: &str) -> Result<Tracks, CliError> {
                     place: Place::LatLon(report.lat_deg, report.lon_deg),
                     course_deg: report.course_deg,
                     speed_kn: report.speed_kn,
+                    status: report
+                        .navigational_status
+                        .and_then(vorrt_colregs::observed::NavigationalStatus::from_ais),
                 })
             })
             .collect();

@@ -10,6 +10,8 @@
 
 pub(crate) mod build;
 pub(crate) mod formats;
+pub(crate) mod observation;
+pub(crate) use observation::DEFAULT_MAX_SPEED_KN;
 pub(crate) mod output;
 pub(crate) mod resample;
 pub(crate) mod tracks;
@@ -93,10 +95,15 @@ pub(crate) struct JudgeArgs {
     /// Length of a vessel neither the scenario nor the tracks give, metres.
     #[arg(long, value_name = "M", default_value_t = vorrt_ais::DEFAULT_LENGTH_M)]
     pub(crate) length_m: f64,
-    /// Ownship's rate-of-turn limit, degrees per second [default: the
-    /// planner's, from ownship's length and speed].
+    /// Ownship's rate-of-turn limit, degrees per second [default: a turn
+    /// of radius one length at its largest speed, where its length is known;
+    /// else the rate is reported, not judged].
     #[arg(long, value_name = "DEG_S")]
     pub(crate) max_turn_rate_deg_s: Option<f64>,
+    /// A fix farther from the vessel's last than this speed allows is a
+    /// jump, rejected, knots.
+    #[arg(long, value_name = "KN", default_value_t = observation::DEFAULT_MAX_SPEED_KN)]
+    pub(crate) max_speed_kn: f64,
 }
 
 /// The format of `path`: the one given, else by extension, else by content.
@@ -127,6 +134,40 @@ fn positive(name: &str, value: f64) -> Result<f64, CliError> {
     }
 }
 
+/// Reads the tracks in `text` (of `format`), rebuilds the run and judges
+/// it with the one evaluation: what `vorrt judge` and the Python binding's
+/// `vorrt.judge` both do.
+///
+/// # Errors
+/// [`CliError::BadInput`] for invalid tracks or options.
+pub(crate) fn judge_text(
+    text: &str,
+    format: TracksFormat,
+    scenario: Option<vorrt_scenarios::Scenario>,
+    options: &build::Options,
+) -> Result<
+    (
+        build::Rebuilt,
+        vorrt_scenarios::Evaluation,
+        output::Judgement,
+    ),
+    CliError,
+> {
+    let file = options.tracks_file.as_str();
+    let tracks = match format {
+        TracksFormat::Csv => tracks::read_csv(file, text)?,
+        TracksFormat::Geojson => formats::read_geojson(file, text)?,
+        TracksFormat::Ais => formats::read_ais(file, text)?,
+    };
+    let rebuilt = build::rebuild(tracks, scenario, options)?;
+    let evaluation = vorrt_scenarios::evaluate(&rebuilt.scenario, &rebuilt.record);
+    let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
+    // No planner ran (an empty sum of times is -0).
+    report.planning.total_planning_time_s = 0.0;
+    let judgement = output::Judgement::new(&evaluation, report, rebuilt.input.clone());
+    Ok((rebuilt, evaluation, judgement))
+}
+
 /// Runs `vorrt judge`: exit 0 when the tracks are safe and compliant, 1
 /// when not.
 ///
@@ -141,6 +182,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         ("d-th", args.d_th),
         ("step-s", args.step_s),
         ("max-turn-rate-deg-s", args.max_turn_rate_deg_s),
+        ("max-speed-kn", Some(args.max_speed_kn)),
     ] {
         if let Some(value) = value {
             positive(name, value)?;
@@ -150,11 +192,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
     let bytes = std::fs::read(&args.tracks)
         .map_err(|error| CliError::BadInput(format!("cannot read {file}: {error}")))?;
     let text = String::from_utf8_lossy(&bytes);
-    let tracks = match detect(&args.tracks, &text, args.format) {
-        TracksFormat::Csv => tracks::read_csv(&file, &text)?,
-        TracksFormat::Geojson => formats::read_geojson(&file, &text)?,
-        TracksFormat::Ais => formats::read_ais(&file, &text)?,
-    };
+    let format = detect(&args.tracks, &text, args.format);
     let scenario = args.scenario.as_deref().map(crate::run::load).transpose()?;
     let options = build::Options {
         tracks_file: file,
@@ -165,13 +203,9 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         goal_tolerance_m: args.goal_tolerance_m,
         default_length_m: args.length_m,
         max_turn_rate_deg_s: args.max_turn_rate_deg_s,
+        max_speed_kn: args.max_speed_kn,
     };
-    let rebuilt = build::rebuild(tracks, scenario, &options)?;
-    let evaluation = vorrt_scenarios::evaluate(&rebuilt.scenario, &rebuilt.record);
-    let mut report = Report::new(&rebuilt.scenario, &rebuilt.record, &evaluation);
-    // No planner ran (an empty sum of times is -0).
-    report.planning.total_planning_time_s = 0.0;
-    let judgement = output::Judgement::new(&evaluation, report, rebuilt.input);
+    let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, &options)?;
     let dir = args.out.clone().unwrap_or_else(|| {
         PathBuf::from("out")
             .join("judge")
@@ -201,7 +235,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
     )?;
     console::print(&output::table(&judgement));
     console::line(&format!(
-        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,replay.html}}",
+        "\nwrote {}/{{{JUDGEMENT_JSON},trajectories.svg,trajectories.png,distance.svg,distance.png,speed.svg,speed.png,replay.html}}",
         dir.display()
     ));
     Ok(if judgement.safe_and_compliant {

@@ -13,9 +13,14 @@ pub(crate) struct Judgement {
     /// The judgement in the report's schema (`docs/report-format.md`).
     #[serde(flatten)]
     pub(crate) report: Report,
-    /// No collision, `d_th` kept and no COLREGs finding
-    /// (`vorrt_scenarios::Evaluation::safe_and_compliant`): exit code 0.
+    /// No collision and no grounding, `d_th` and the land clearance kept,
+    /// no COLREGs finding
+    /// (`vorrt_scenarios::Evaluation::safe_and_compliant`) and no encounter
+    /// undecided: exit code 0.
     pub(crate) safe_and_compliant: bool,
+    /// The targets whose encounter was unfinished when the tracks ended
+    /// (still closing at the last sample): neither passed nor safe.
+    pub(crate) undecided: Vec<String>,
     /// How the tracks were read, resampled and completed.
     pub(crate) input: Input,
 }
@@ -23,11 +28,50 @@ pub(crate) struct Judgement {
 impl Judgement {
     /// The judgement `evaluation` reports as `report`, the tracks read as
     /// `input` says.
-    pub(crate) fn new(evaluation: &Evaluation, report: Report, input: Input) -> Self {
+    pub(crate) fn new(evaluation: &Evaluation, report: Report, mut input: Input) -> Self {
+        for (vessel, noise) in input.observation.iter_mut().zip(&evaluation.noise) {
+            vessel.window_s = noise.window_s;
+            vessel.turn_tolerance_deg = noise.turn_tolerance_rad.to_degrees();
+            vessel.action_detection_deg = noise.action_detection_rad.to_degrees();
+        }
+        let undecided: Vec<String> = evaluation
+            .targets
+            .iter()
+            .filter(|target| target.undecided)
+            .map(|target| target.name.clone())
+            .collect();
         Self {
             report,
-            safe_and_compliant: evaluation.safe_and_compliant(),
+            safe_and_compliant: evaluation.safe_and_compliant() && undecided.is_empty(),
+            undecided,
             input,
+        }
+    }
+}
+
+/// One line per judged vessel on how it was observed (jitter, window,
+/// thresholds, jumps), and one on what its status brings.
+fn write_observation(text: &mut String, input: &Input) {
+    use std::fmt::Write as _;
+    for vessel in &input.observation {
+        let jitter = vessel
+            .position_noise_m
+            .map_or_else(|| "unknown".to_owned(), |m| format!("{m:.1} m"));
+        let _ = writeln!(
+            *text,
+            "  observed: {:?}: jitter {jitter}, courses over {:.0} s, turns above {:.1}°, action at {:.1}°{}",
+            vessel.name,
+            vessel.window_s,
+            vessel.turn_tolerance_deg,
+            vessel.action_detection_deg,
+            if vessel.jumps_rejected > 0 {
+                format!(", {} jumping fixes rejected", vessel.jumps_rejected)
+            } else {
+                String::new()
+            }
+        );
+        if let Some(rule) = &vessel.rule_18 {
+            let _ = writeln!(*text, "  status: {:?}: {rule}", vessel.name);
         }
     }
 }
@@ -82,6 +126,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     {
         let _ = writeln!(text, "  {line}");
     }
+    write_observation(&mut text, input);
     report.write_target_table(&mut text);
     let _ = writeln!(text);
     let _ = writeln!(
@@ -96,6 +141,9 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     };
     let _ = writeln!(text, "reached goal:   {arrival}");
     report.write_overhead_lines(&mut text);
+    if let Some(rule10) = &report.rule10 {
+        rule10.write_lines(&mut text);
+    }
     let quality = &report.path_quality;
     let _ = writeln!(
         text,
@@ -110,13 +158,21 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     for finding in &quality.findings {
         let _ = writeln!(text, "                - {finding}");
     }
+    for name in &judgement.undecided {
+        let _ = writeln!(
+            text,
+            "undecided:      {name:?}: still closing when the tracks end; not passed, not judged safe"
+        );
+    }
     let _ = writeln!(
         text,
         "verdict:        {}",
         if judgement.safe_and_compliant {
             "safe and compliant"
-        } else {
+        } else if judgement.undecided.is_empty() {
             "NOT safe and compliant"
+        } else {
+            "NOT safe and compliant (undecided)"
         }
     );
     text

@@ -260,8 +260,9 @@ fn speeds_from_track(times_s: &[f64], positions_m: &[DVec2]) -> Vec<f64> {
 }
 
 /// `vessel` on `clock`: positions and recorded speeds interpolated linearly,
-/// recorded courses along the shorter turn; courses and speeds the file
-/// does not give are taken from the resampled track.
+/// courses along the shorter turn (recorded ones, else the fixes' own, from
+/// the fix before to the fix after); speeds the file does not give are taken
+/// from the resampled track.
 pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
     let brackets: Vec<(usize, usize, f64)> = clock
         .times_s
@@ -275,20 +276,24 @@ pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
             if u == 0.0 { pa } else { pa + (pb - pa) * u }
         })
         .collect();
-    let courses_rad = match &vessel.courses_rad {
-        Some(courses) => brackets
-            .iter()
-            .map(|&(a, b, u)| {
-                let (ca, cb) = (courses[a], courses[b]);
-                if u == 0.0 {
-                    ca
-                } else {
-                    angle::normalize_2pi(ca + angle::signed_turn(ca, cb) * u)
-                }
-            })
-            .collect(),
-        None => courses_from_track(&positions_m),
-    };
+    // Courses the file does not give are the fixes' own (from the fix before
+    // to the fix after), turned between fixes like recorded ones: a rate of
+    // turn is then never measured over less than the data's own interval.
+    let fix_courses_rad = vessel
+        .courses_rad
+        .clone()
+        .unwrap_or_else(|| courses_from_track(&vessel.positions_m));
+    let courses_rad = brackets
+        .iter()
+        .map(|&(a, b, u)| {
+            let (ca, cb) = (fix_courses_rad[a], fix_courses_rad[b]);
+            if u == 0.0 {
+                ca
+            } else {
+                angle::normalize_2pi(ca + angle::signed_turn(ca, cb) * u)
+            }
+        })
+        .collect();
     let speeds_mps = match &vessel.speeds_mps {
         Some(speeds) => brackets
             .iter()
@@ -340,6 +345,7 @@ mod tests {
                     place: Place::Local(DVec2::new(east, north)),
                     course_deg: None,
                     speed_kn: None,
+                    status: None,
                 })
                 .collect(),
             ..Track::default()

@@ -4,6 +4,7 @@
 
 use crate::error::CliError;
 use std::collections::HashMap;
+use vorrt_colregs::observed::NavigationalStatus;
 use vorrt_geometry::DVec2;
 
 /// Where a fix puts the vessel.
@@ -26,6 +27,8 @@ pub(crate) struct Fix {
     pub(crate) course_deg: Option<f64>,
     /// Speed over ground, knots, when given.
     pub(crate) speed_kn: Option<f64>,
+    /// The navigational status reported with the fix (AIS), when given.
+    pub(crate) status: Option<NavigationalStatus>,
 }
 
 /// One vessel's recorded track.
@@ -37,6 +40,8 @@ pub(crate) struct Track {
     pub(crate) mmsi: Option<u32>,
     /// Its length overall, metres, when the file gives it.
     pub(crate) length_m: Option<f64>,
+    /// Its AIS ship and cargo type (ITU-R M.1371 table 53), when given.
+    pub(crate) ship_type: Option<u8>,
     /// Whether the file marks it as the recording vessel (`role: "ownship"`
     /// in `GeoJSON`, `!AIVDO` in AIS).
     pub(crate) marked_ownship: bool,
@@ -109,6 +114,8 @@ struct Columns {
     course: Option<usize>,
     speed: Option<usize>,
     length: Option<usize>,
+    status: Option<usize>,
+    ship_type: Option<usize>,
 }
 
 impl Columns {
@@ -129,6 +136,8 @@ impl Columns {
             course: find("course_deg"),
             speed: find("speed_kn"),
             length: find("length_m"),
+            status: find("status"),
+            ship_type: find("ship_type"),
         };
         if columns.time_s.is_none() && columns.time.is_none() {
             return Err(bad(
@@ -244,12 +253,68 @@ fn optional(
         .map(Option::flatten)
 }
 
+/// A row's navigational status: an AIS code (0-15; 15 "not defined" is no
+/// status) or its name ([`NavigationalStatus::name`]); `None` when empty.
+fn status(
+    file: &str,
+    line: u64,
+    record: &csv::StringRecord,
+    column: Option<usize>,
+) -> Result<Option<NavigationalStatus>, CliError> {
+    let Some(text) = column.and_then(|column| record.get(column)).map(str::trim) else {
+        return Ok(None);
+    };
+    if text.is_empty() {
+        return Ok(None);
+    }
+    if let Ok(code) = text.parse::<u8>()
+        && code <= 15
+    {
+        return Ok(NavigationalStatus::from_ais(code));
+    }
+    (0..15)
+        .filter_map(NavigationalStatus::from_ais)
+        .find(|status| status.name() == text)
+        .map(Some)
+        .ok_or_else(|| {
+            bad(
+                file,
+                format!(
+                    "line {line}, field `status`: {text:?} is neither an AIS navigational status code (0-15) nor a status name (at_anchor, moored, ...)"
+                ),
+            )
+        })
+}
+
+/// A row's AIS ship type (0-255); `None` when empty.
+fn ship_type(
+    file: &str,
+    line: u64,
+    record: &csv::StringRecord,
+    column: Option<usize>,
+) -> Result<Option<u8>, CliError> {
+    let Some(text) = column.and_then(|column| record.get(column)).map(str::trim) else {
+        return Ok(None);
+    };
+    if text.is_empty() {
+        return Ok(None);
+    }
+    text.parse::<u8>().map(Some).map_err(|_| {
+        bad(
+            file,
+            format!("line {line}, field `ship_type`: {text:?} is not an AIS ship type (0-255)"),
+        )
+    })
+}
+
 /// Reads a tracks CSV: the `trajectory.csv` that `vorrt simulate` writes
 /// (`time_s,vessel,east_m,north_m,course_deg,speed_kn[,lat_deg,lon_deg]`),
 /// or any CSV with a header naming `vessel`, a time (`time_s` seconds or
 /// `time` ISO 8601 UTC) and a position (`east_m,north_m` or
-/// `lat_deg,lon_deg`); `course_deg`, `speed_kn` and `length_m` are optional.
-/// Columns are found by name; others are ignored.
+/// `lat_deg,lon_deg`); `course_deg`, `speed_kn`, `length_m`, `status` (AIS
+/// navigational status) and `ship_type` (AIS ship type) are optional. A
+/// course of 360° or more is AIS's "not available" (3600 in tenths): no
+/// course. Columns are found by name; others are ignored.
 ///
 /// # Errors
 /// [`CliError::BadInput`] naming the file, the line and the field.
@@ -264,6 +329,7 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
     let columns = Columns::new(file, &header)?;
     let mut collector = Collector::default();
     let mut absolute_times = false;
+    let mut courses_not_available = 0usize;
     for record in reader.records() {
         let record = record.map_err(|error| {
             let line = error.position().map_or(0, csv::Position::line);
@@ -277,7 +343,12 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
         let (time_s, absolute) = columns.time_s(file, line, &record)?;
         absolute_times |= absolute;
         let place = columns.place(file, line, &record)?;
-        let course_deg = optional(file, line, &record, columns.course, "course_deg")?;
+        let mut course_deg = optional(file, line, &record, columns.course, "course_deg")?;
+        if course_deg.is_some_and(|course| !(0.0..360.0).contains(&course)) {
+            // AIS: 360.0 is "not available" (ITU-R M.1371-5, message 1).
+            courses_not_available += 1;
+            course_deg = None;
+        }
         let speed_kn = optional(file, line, &record, columns.speed, "speed_kn")?;
         if let Some(speed_kn) = speed_kn
             && speed_kn < 0.0
@@ -296,22 +367,34 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
                 format!("line {line}, field `length_m` is {length_m}, expected more than 0"),
             ));
         }
+        let status = status(file, line, &record, columns.status)?;
+        let ship_type = ship_type(file, line, &record, columns.ship_type)?;
         let track = collector.track(vessel);
         if track.length_m.is_none() {
             track.length_m = length_m;
+        }
+        if track.ship_type.is_none() {
+            track.ship_type = ship_type;
         }
         track.fixes.push(Fix {
             time_s,
             place,
             course_deg,
             speed_kn,
+            status,
         });
+    }
+    let mut notes = Vec::new();
+    if courses_not_available > 0 {
+        notes.push(format!(
+            "{courses_not_available} fixes with a course of 360° or more (AIS: not available) have no course"
+        ));
     }
     Ok(Tracks {
         format: "csv",
         tracks: collector.into_tracks(),
         absolute_times,
-        notes: Vec::new(),
+        notes,
     })
 }
 
@@ -319,6 +402,34 @@ pub(crate) fn read_csv(file: &str, text: &str) -> Result<Tracks, CliError> {
 /// match total without a panic.
 fn unreachable_columns<T>(file: &str) -> Result<T, CliError> {
     Err(bad(file, "line 1: missing time or position columns"))
+}
+
+/// Shifts absolute fix times (Unix seconds) so that the earliest fix is at
+/// second 0; returns that instant as ISO 8601 UTC (`None` for relative times).
+pub(crate) fn to_relative_times(tracks: &mut Tracks) -> Option<String> {
+    if !tracks.absolute_times {
+        return None;
+    }
+    let base = tracks
+        .tracks
+        .iter()
+        .flat_map(|track| &track.fixes)
+        .map(|fix| fix.time_s)
+        .fold(f64::INFINITY, f64::min);
+    if !base.is_finite() {
+        return None;
+    }
+    for fix in tracks.tracks.iter_mut().flat_map(|track| &mut track.fixes) {
+        fix.time_s -= base;
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a finite UNIX time in nanoseconds is far inside i128 (and the cast saturates)"
+    )]
+    let base_ns = (base * 1e9).round() as i128;
+    time::OffsetDateTime::from_unix_timestamp_nanos(base_ns)
+        .ok()
+        .map(vorrt_scenarios::geo::format_utc_time)
 }
 
 /// A UTC time as UNIX seconds.
@@ -358,6 +469,34 @@ mod tests {
             error.contains("line 2") && error.contains("latitude"),
             "{error}"
         );
+    }
+
+    #[test]
+    fn reads_status_and_ship_type_and_course_not_available() {
+        let text = "time_s,vessel,east_m,north_m,course_deg,status,ship_type\n\
+                    0,own,0,0,360,0,70\n5,own,0,1,10,at_anchor,\n10,own,0,2,10,15,\n";
+        let tracks = read_csv("t.csv", text).unwrap();
+        let own = &tracks.tracks[0];
+        assert_eq!(own.ship_type, Some(70));
+        assert_eq!(own.fixes[0].course_deg, None);
+        assert_eq!(
+            own.fixes[0].status,
+            Some(NavigationalStatus::UnderWayUsingEngine)
+        );
+        assert_eq!(own.fixes[1].status, Some(NavigationalStatus::AtAnchor));
+        assert_eq!(own.fixes[2].status, None);
+        assert!(
+            tracks.notes[0].contains("not available"),
+            "{:?}",
+            tracks.notes
+        );
+        let error = read_csv(
+            "t.csv",
+            "time_s,vessel,east_m,north_m,status\n0,own,0,0,docked\n",
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(error.contains("line 2, field `status`"), "{error}");
     }
 
     #[test]

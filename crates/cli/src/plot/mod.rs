@@ -4,22 +4,38 @@
 //!   black), start dots, a course triangle every few minutes, goal crosses,
 //!   at each target's closest approach the two positions joined by a dashed
 //!   line with the distance written and the `d_th` circle around ownship,
-//!   traffic lanes as shaded strips, and a legend beside the chart.
+//!   traffic lanes as shaded strips, land filled, and a legend beside the
+//!   chart.
 //! - `distance`: distance from ownship to each target over time (minutes,
 //!   metres), `d_th` as a horizontal line, each minimum marked and labelled.
+//! - `speed`: every vessel's speed over time (minutes, knots), ownship bold
+//!   black on top, its speed changes labelled.
 //!
-//! PNG text uses the bundled font (see [`crate::font`]).
+//! Ownship is drawn after every target, so no target hides it; labels are
+//! placed so that none overlaps another ([`labels`]); targets get 20
+//! distinct colours, then a ramp ([`palette`]). PNG text uses the bundled
+//! font, drawn glyph by glyph with its bearings ([`crate::font`]). Decision 36.
 
-use crate::font::{self, FAMILY};
+use crate::font::{self, FAMILY, GlyphText};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 use vorrt_scenarios::{Evaluation, Scenario, SimulationRecord, TargetEvaluation};
 
 mod distance;
+mod labels;
+mod land;
+mod legend;
+mod palette;
+#[cfg(test)]
+mod render_tests;
+mod speed;
 mod trajectories;
 
 use distance::draw_distance;
+use labels::{LabelPlacer, PixelBox};
+pub(crate) use palette::target_colour;
+use speed::draw_speed;
 use trajectories::draw_trajectories;
 
 /// A chart of both plots, on `f64` axes (east and north in nautical miles;
@@ -35,29 +51,9 @@ pub(crate) const SIZE: (u32, u32) = (1000, 800);
 
 const METRES_PER_NM: f64 = 1852.0;
 
-/// Target colours (Tableau 10), cycled.
-const PALETTE: [RGBColor; 10] = [
-    RGBColor(214, 39, 40),
-    RGBColor(31, 119, 180),
-    RGBColor(44, 160, 44),
-    RGBColor(255, 127, 14),
-    RGBColor(148, 103, 189),
-    RGBColor(23, 190, 207),
-    RGBColor(140, 86, 75),
-    RGBColor(227, 119, 194),
-    RGBColor(188, 189, 34),
-    RGBColor(127, 127, 127),
-];
-
 const OWNSHIP_COLOUR: RGBColor = RGBColor(0, 0, 0);
 const CLEARANCE_COLOUR: RGBColor = RGBColor(200, 0, 0);
 const LANE_COLOUR: RGBColor = RGBColor(150, 110, 200);
-
-/// The colour of target `index` in every plot.
-#[must_use]
-pub(crate) fn target_colour(index: usize) -> RGBColor {
-    PALETTE[index % PALETTE.len()]
-}
 
 fn to_text<E: std::fmt::Display>(error: E) -> String {
     format!("cannot draw a plot: {error}")
@@ -69,6 +65,7 @@ struct Track<'a> {
     colour: RGBColor,
     points_nm: Vec<(f64, f64)>,
     courses_rad: Vec<f64>,
+    speeds_kn: Vec<f64>,
     goal_nm: Option<(f64, f64)>,
     evaluation: Option<&'a TargetEvaluation>,
 }
@@ -81,6 +78,8 @@ struct PlotData<'a> {
     ownship: Track<'a>,
     targets: Vec<Track<'a>>,
     lanes: Vec<LaneShape<'a>>,
+    /// Land areas, each its outer ring then its holes, nautical miles.
+    land: Vec<land::LandShape>,
 }
 
 /// A traffic lane as drawn.
@@ -90,6 +89,10 @@ struct LaneShape<'a> {
     corners_nm: Vec<(f64, f64)>,
     /// Direction of traffic flow, degrees.
     course_deg: f64,
+}
+
+fn knots(speed_mps: f64) -> f64 {
+    vorrt_geometry::units::mps_to_knots(speed_mps)
 }
 
 fn nm(point_m: glam::DVec2) -> (f64, f64) {
@@ -107,6 +110,7 @@ impl<'a> PlotData<'a> {
             colour: OWNSHIP_COLOUR,
             points_nm: record.ownship.iter().map(|s| nm(s.position_m)).collect(),
             courses_rad: record.ownship.iter().map(|s| s.course_rad).collect(),
+            speeds_kn: record.ownship.iter().map(|s| knots(s.speed_mps)).collect(),
             goal_nm: Some(nm(scenario.ownship_goal_m())),
             evaluation: None,
         };
@@ -122,6 +126,7 @@ impl<'a> PlotData<'a> {
                 colour: target_colour(index),
                 points_nm: track.iter().map(|s| nm(s.position_m)).collect(),
                 courses_rad: track.iter().map(|s| s.course_rad).collect(),
+                speeds_kn: track.iter().map(|s| knots(s.speed_mps)).collect(),
                 goal_nm: scenario
                     .targets
                     .get(index)
@@ -158,6 +163,15 @@ impl<'a> PlotData<'a> {
             ownship,
             targets,
             lanes,
+            land: scenario
+                .land_areas()
+                .map(|area| {
+                    area.rings_m
+                        .iter()
+                        .map(|ring| ring.iter().copied().map(nm).collect())
+                        .collect()
+                })
+                .collect(),
         }
     }
 
@@ -182,7 +196,8 @@ impl<'a> PlotData<'a> {
     }
 }
 
-/// Writes `trajectories.svg/.png` and `distance.svg/.png` into `dir`.
+/// Writes `trajectories.svg/.png`, `distance.svg/.png` and `speed.svg/.png`
+/// into `dir`.
 ///
 /// # Errors
 /// A message when a file cannot be drawn or written.
@@ -194,48 +209,50 @@ pub(crate) fn write_plots(
 ) -> Result<(), String> {
     font::register();
     let data = PlotData::new(scenario, record, evaluation);
-    for plot in [Plot::Trajectories, Plot::Distance] {
+    for plot in Plot::ALL {
         let svg = dir.join(format!("{}.svg", plot.stem()));
         let root = SVGBackend::new(&svg, SIZE).into_drawing_area();
         plot.draw(&root, &data)?;
         root.present().map_err(to_text)?;
         let png = dir.join(format!("{}.png", plot.stem()));
-        let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
+        let root = GlyphText(BitMapBackend::new(&png, SIZE)).into_drawing_area();
         plot.draw(&root, &data)?;
         root.present().map_err(to_text)?;
     }
     Ok(())
 }
 
-/// One label of the key to the symbols, in the legend panel.
-fn key_label<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    label: impl Into<String>,
-    at: (i32, i32),
-) -> Result<(), String> {
-    area.draw(&Text::new(
-        label.into(),
-        at,
-        (FAMILY, 13).into_font().color(&BLACK),
-    ))
-    .map_err(to_text)
-}
-
-/// The two plots written beside `report.json`, each as SVG and PNG.
+/// The plots written beside `report.json`, each as SVG and PNG.
 #[derive(Debug, Clone, Copy)]
 enum Plot {
     /// Every vessel's track, closest approaches, `d_th` and lanes.
     Trajectories,
     /// Distance from ownship to each target over time.
     Distance,
+    /// Every vessel's speed over time.
+    Speed,
 }
 
+/// The file names of every plot [`write_plots`] writes, SVG then PNG.
+pub(crate) const PLOT_FILES: [&str; 6] = [
+    "trajectories.svg",
+    "trajectories.png",
+    "distance.svg",
+    "distance.png",
+    "speed.svg",
+    "speed.png",
+];
+
 impl Plot {
+    /// Every plot, in the order written.
+    const ALL: [Plot; 3] = [Plot::Trajectories, Plot::Distance, Plot::Speed];
+
     /// File name without extension.
     fn stem(self) -> &'static str {
         match self {
             Plot::Trajectories => "trajectories",
             Plot::Distance => "distance",
+            Plot::Speed => "speed",
         }
     }
 
@@ -247,6 +264,7 @@ impl Plot {
         match self {
             Plot::Trajectories => draw_trajectories(root, data),
             Plot::Distance => draw_distance(root, data),
+            Plot::Speed => draw_speed(root, data),
         }
     }
 }
@@ -442,12 +460,23 @@ fn circle_points(centre: (f64, f64), radius: f64) -> Vec<(f64, f64)> {
 }
 
 /// Most closest approaches labelled in a plot; with more targets only the
-/// closest ones are labelled (all are marked).
+/// closest ones are labelled.
 const MAX_LABELS: usize = 6;
 
-/// Whether each target's closest approach gets a label: the [`MAX_LABELS`]
-/// closest ones.
-fn labelled(targets: &[Track<'_>]) -> Vec<bool> {
+/// Most closest approaches marked (the two positions joined, `d_th` around
+/// ownship) in the trajectories plot: with more targets the marks of the
+/// far ones would hide the near ones.
+const MAX_MARKED: usize = 12;
+
+/// How many of `targets` targets are named in a chart (at their start, in a
+/// series legend): all up to the 20 with colours of their own, else the
+/// [`MAX_MARKED`] closest.
+fn named_count(targets: usize) -> usize {
+    if targets <= 20 { targets } else { MAX_MARKED }
+}
+
+/// Whether each target is among the `count` with the closest approaches.
+fn closest(targets: &[Track<'_>], count: usize) -> Vec<bool> {
     let mut order: Vec<(usize, f64)> = targets
         .iter()
         .enumerate()
@@ -462,10 +491,93 @@ fn labelled(targets: &[Track<'_>]) -> Vec<bool> {
         .collect();
     order.sort_by(|a, b| a.1.total_cmp(&b.1));
     let mut chosen = vec![false; targets.len()];
-    for (index, _) in order.into_iter().take(MAX_LABELS) {
+    for (index, _) in order.into_iter().take(count) {
         chosen[index] = true;
     }
     chosen
+}
+
+/// Whether each target's closest approach gets a label: the [`MAX_LABELS`]
+/// closest ones.
+fn labelled(targets: &[Track<'_>]) -> Vec<bool> {
+    closest(targets, MAX_LABELS)
+}
+
+/// A label to place: its text, at a point of the chart.
+struct Label {
+    text: String,
+    /// The point it names, in chart units.
+    at: (f64, f64),
+    colour: RGBColor,
+    size_px: u32,
+}
+
+/// A placer for labels in the plotting area of `chart`.
+fn placer_for<DB: DrawingBackend>(chart: &Chart<'_, DB>) -> LabelPlacer {
+    let (x, y) = chart.plotting_area().get_pixel_range();
+    LabelPlacer::new(PixelBox {
+        x0: f64::from(x.start),
+        y0: f64::from(y.start),
+        x1: f64::from(x.end),
+        y1: f64::from(y.end),
+    })
+}
+
+/// Places `labels` in order with `placer` and draws those that fit, each on
+/// a faint white box, with a thin leader line when it sits away from its
+/// point. Returns how many were drawn.
+fn draw_labels<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    placer: &mut LabelPlacer,
+    labels: &[Label],
+) -> Result<usize, String> {
+    let mut drawn = 0;
+    for label in labels {
+        let anchor = chart.backend_coord(&label.at);
+        let anchor_px = (f64::from(anchor.0), f64::from(anchor.1));
+        let size = f64::from(label.size_px);
+        // A little slack: an SVG viewer's sans-serif may be wider than ours.
+        let box_px = (
+            1.06 * font::text_width_px(&label.text, size) + 2.0,
+            font::text_height_px(size) + 2.0,
+        );
+        let Some(placement) = placer.place(anchor_px, box_px) else {
+            continue;
+        };
+        #[expect(
+            clippy::cast_possible_truncation,
+            reason = "pixel offsets within a plot"
+        )]
+        let offset = |x: f64, y: f64| ((x - anchor_px.0) as i32, (y - anchor_px.1) as i32);
+        let (left, top) = placement.top_left_px;
+        let corner = offset(left, top);
+        let far = offset(left + box_px.0, top + box_px.1);
+        if placement.leader {
+            let near = offset(
+                anchor_px.0.clamp(left, left + box_px.0),
+                anchor_px.1.clamp(top, top + box_px.1),
+            );
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(label.at)
+                        + PathElement::new(vec![(0, 0), near], label.colour.mix(0.7)),
+                ))
+                .map_err(to_text)?;
+        }
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at(label.at)
+                    + Rectangle::new([corner, far], WHITE.mix(0.75).filled())
+                    + Text::new(
+                        label.text.clone(),
+                        (corner.0 + 1, corner.1 + 1),
+                        (FAMILY, label.size_px).into_font().color(&label.colour),
+                    ),
+            ))
+            .map_err(to_text)?;
+        drawn += 1;
+    }
+    Ok(drawn)
 }
 
 /// An axis tick: whole numbers without decimals, others with up to two.

@@ -1,9 +1,15 @@
 //! The `trajectories` plot: tracks, closest approaches, lanes and the legend.
+//!
+//! Drawn in layers: lanes, the `d_th` circles, every target (track, course
+//! markers, closest-approach marks, start and goal), then ownship in the
+//! same order, so that no target hides it; then every label, placed so that
+//! none covers another (decision 36).
 
+use super::legend::draw_legend;
 use super::{
-    Chart, FAMILY, LANE_COLOUR, METRES_PER_NM, OWNSHIP_COLOUR, PlotData, Shift, Track, View,
-    circle_points, clip_polygon, fit_view, format_distance, key_label, labelled,
-    marker_interval_min, tick, to_text, triangle,
+    Chart, FAMILY, LANE_COLOUR, Label, MAX_MARKED, METRES_PER_NM, OWNSHIP_COLOUR, PlotData, Shift,
+    Track, View, circle_points, clip_polygon, closest, draw_labels, fit_view, format_distance,
+    labelled, marker_interval_min, named_count, placer_for, tick, to_text, triangle,
 };
 use plotters::prelude::*;
 
@@ -23,12 +29,9 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
     let (width, height) = area.dim_in_pixel();
     let plot_w = f64::from(width.saturating_sub(2 * margin + y_label));
     let plot_h = f64::from(height.saturating_sub(2 * margin + x_label));
-    let vessels: Vec<&Track<'_>> = std::iter::once(&data.ownship)
-        .chain(data.targets.iter())
-        .collect();
     let view = fit_view(
-        vessels
-            .iter()
+        std::iter::once(&data.ownship)
+            .chain(data.targets.iter())
             .flat_map(|track| track.points_nm.iter().copied())
             .chain(data.ownship.goal_nm),
         plot_w,
@@ -55,26 +58,170 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .draw()
         .map_err(to_text)?;
 
+    super::land::draw_land(&mut chart, &data.land, &view)?;
+    let marked = closest(&data.targets, MAX_MARKED);
     draw_lanes(&mut chart, data, &view)?;
-    draw_clearance_circles(&mut chart, data)?;
-    // Targets first, ownship on top.
-    for track in vessels.iter().rev() {
-        let width = if track.evaluation.is_none() { 3 } else { 2 };
-        chart
-            .draw_series(LineSeries::new(
-                track.points_nm.iter().copied(),
-                track.colour.stroke_width(width),
-            ))
-            .map_err(to_text)?;
-    }
+    draw_clearance_circles(&mut chart, data, &marked)?;
     let interval_min = marker_interval_min(data.duration_s());
-    draw_course_markers(&mut chart, data, &vessels, interval_min)?;
-    draw_starts_and_goals(&mut chart, &vessels, &view)?;
-    draw_closest_approaches(&mut chart, data)?;
+    for (target, &mark) in data.targets.iter().zip(&marked) {
+        draw_vessel(&mut chart, data, target, interval_min, &view)?;
+        if mark {
+            draw_closest_approach(&mut chart, data, target)?;
+        }
+    }
+    // Ownship last: on top of every target.
+    draw_vessel(&mut chart, data, &data.ownship, interval_min, &view)?;
+    let mut placer = placer_for(&chart);
+    draw_labels(&mut chart, &mut placer, &labels(data, &view, interval_min))?;
     draw_legend(&right, data, interval_min)
 }
 
-/// Traffic lanes, clipped to the view, each labelled with its name and traffic direction.
+/// One vessel: its track, course markers every `interval_min` minutes, its
+/// start dot and its goal cross (when in view). Ownship's are bolder.
+fn draw_vessel<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    data: &PlotData<'_>,
+    track: &Track<'_>,
+    interval_min: f64,
+    view: &View,
+) -> Result<(), String> {
+    let own = track.evaluation.is_none();
+    let colour = track.colour;
+    chart
+        .draw_series(LineSeries::new(
+            track.points_nm.iter().copied(),
+            colour.stroke_width(if own { 3 } else { 2 }),
+        ))
+        .map_err(to_text)?;
+    let size = if own { 9.0 } else { 7.0 };
+    let mut marker_time_s = interval_min * 60.0;
+    while marker_time_s < data.duration_s() {
+        let step = data.step_at(marker_time_s);
+        if let (Some(&point), Some(&course)) =
+            (track.points_nm.get(step), track.courses_rad.get(step))
+        {
+            chart
+                .draw_series(std::iter::once(
+                    EmptyElement::at(point) + Polygon::new(triangle(course, size), colour.filled()),
+                ))
+                .map_err(to_text)?;
+        }
+        marker_time_s += interval_min * 60.0;
+    }
+    if let Some(&start) = track.points_nm.first() {
+        chart
+            .draw_series(std::iter::once(Circle::new(start, 5, colour.filled())))
+            .map_err(to_text)?;
+    }
+    if let Some(goal) = track.goal_nm.filter(|goal| view.contains(*goal)) {
+        let (size, width) = if own { (8, 3) } else { (5, 2) };
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at(goal) + Cross::new((0, 0), size, colour.stroke_width(width)),
+            ))
+            .map_err(to_text)?;
+    }
+    Ok(())
+}
+
+/// Every label of the chart, most important first (the placer drops the
+/// last ones when room runs out): the closest approaches, closest first;
+/// ownship's name and goal; the lanes; ownship's times; the targets' names,
+/// those that came closest first ([`named_count`] of them).
+fn labels(data: &PlotData<'_>, view: &View, interval_min: f64) -> Vec<Label> {
+    let mut labels = Vec::new();
+    let shown = labelled(&data.targets);
+    let mut by_distance: Vec<(usize, &Track<'_>)> = data.targets.iter().enumerate().collect();
+    by_distance.sort_by(|a, b| min_distance(a.1).total_cmp(&min_distance(b.1)));
+    for &(index, target) in &by_distance {
+        let Some(evaluation) = target.evaluation.filter(|_| shown[index]) else {
+            continue;
+        };
+        let step = data.step_at(evaluation.time_of_min_s);
+        let (Some(&own), Some(&other)) =
+            (data.ownship.points_nm.get(step), target.points_nm.get(step))
+        else {
+            continue;
+        };
+        labels.push(Label {
+            text: format!(
+                "{} {}",
+                target.name,
+                format_distance(evaluation.min_distance_m)
+            ),
+            at: (0.5 * (own.0 + other.0), 0.5 * (own.1 + other.1)),
+            colour: target.colour,
+            size_px: 13,
+        });
+    }
+    if let Some(&start) = data.ownship.points_nm.first() {
+        labels.push(Label {
+            text: data.ownship.name.to_owned(),
+            at: start,
+            colour: OWNSHIP_COLOUR,
+            size_px: 14,
+        });
+    }
+    if let Some(goal) = data.ownship.goal_nm.filter(|goal| view.contains(*goal)) {
+        labels.push(Label {
+            text: "goal".to_owned(),
+            at: goal,
+            colour: OWNSHIP_COLOUR,
+            size_px: 14,
+        });
+    }
+    labels.extend(lane_labels(data, view));
+    let mut marker_time_s = interval_min * 60.0;
+    while marker_time_s < data.duration_s() {
+        if let Some(&point) = data.ownship.points_nm.get(data.step_at(marker_time_s)) {
+            labels.push(Label {
+                text: format!("{:.0} min", marker_time_s / 60.0),
+                at: point,
+                colour: OWNSHIP_COLOUR,
+                size_px: 12,
+            });
+        }
+        marker_time_s += interval_min * 60.0;
+    }
+    // With many targets only the nearest are named at their start (all are
+    // in the legend, nearest first).
+    let named = named_count(data.targets.len());
+    for (_, target) in by_distance.into_iter().take(named) {
+        if let Some(&start) = target.points_nm.first() {
+            labels.push(Label {
+                text: target.name.to_owned(),
+                at: start,
+                colour: target.colour,
+                size_px: 13,
+            });
+        }
+    }
+    labels
+}
+
+fn min_distance(track: &Track<'_>) -> f64 {
+    track.evaluation.map_or(f64::INFINITY, |e| e.min_distance_m)
+}
+
+/// Each lane's name and traffic direction, at the top left of its part in view.
+fn lane_labels(data: &PlotData<'_>, view: &View) -> Vec<Label> {
+    data.lanes
+        .iter()
+        .filter_map(|lane| {
+            let clipped = clip_polygon(&lane.corners_nm, view);
+            let top = clipped.iter().map(|p| p.1).reduce(f64::max)?;
+            let left = clipped.iter().map(|p| p.0).reduce(f64::min)?;
+            Some(Label {
+                text: format!("TSS lane {}, traffic {:03.0}°", lane.name, lane.course_deg),
+                at: (left, top),
+                colour: LANE_COLOUR,
+                size_px: 13,
+            })
+        })
+        .collect()
+}
+
+/// Traffic lanes, clipped to the view, as shaded strips.
 fn draw_lanes<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     data: &PlotData<'_>,
@@ -99,33 +246,18 @@ fn draw_lanes<DB: DrawingBackend>(
                 LANE_COLOUR.mix(0.6).stroke_width(1),
             )))
             .map_err(to_text)?;
-        let top = clipped
-            .iter()
-            .map(|p| p.1)
-            .fold(f64::NEG_INFINITY, f64::max);
-        let label_at = (view.x0 + 0.02 * (view.x1 - view.x0), top);
-        let colour = LANE_COLOUR;
-        chart
-            .draw_series(std::iter::once(
-                EmptyElement::at(label_at)
-                    + Text::new(
-                        format!("TSS lane {}, traffic {:03.0}°", lane.name, lane.course_deg),
-                        (0, 3),
-                        (FAMILY, 13).into_font().color(&colour),
-                    ),
-            ))
-            .map_err(to_text)?;
     }
     Ok(())
 }
 
-/// The `d_th` circle around ownship at each target's closest approach.
+/// The `d_th` circle around ownship at each `marked` target's closest approach.
 fn draw_clearance_circles<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     data: &PlotData<'_>,
+    marked: &[bool],
 ) -> Result<(), String> {
     let d_th_nm = data.d_th_m / METRES_PER_NM;
-    for target in &data.targets {
+    for (target, _) in data.targets.iter().zip(marked).filter(|(_, mark)| **mark) {
         let Some(evaluation) = target.evaluation else {
             continue;
         };
@@ -149,293 +281,36 @@ fn draw_clearance_circles<DB: DrawingBackend>(
     Ok(())
 }
 
-/// Course triangles on every track every `interval_min` minutes, ownship's
-/// labelled with the time.
-fn draw_course_markers<DB: DrawingBackend>(
+/// A target's closest approach: its and ownship's positions then, joined by
+/// a dashed line.
+fn draw_closest_approach<DB: DrawingBackend>(
     chart: &mut Chart<'_, DB>,
     data: &PlotData<'_>,
-    vessels: &[&Track<'_>],
-    interval_min: f64,
+    target: &Track<'_>,
 ) -> Result<(), String> {
-    let mut marker_time_s = interval_min * 60.0;
-    while marker_time_s < data.duration_s() {
-        let step = data.step_at(marker_time_s);
-        for track in vessels {
-            let (Some(&point), Some(&course)) =
-                (track.points_nm.get(step), track.courses_rad.get(step))
-            else {
-                continue;
-            };
-            let own = track.evaluation.is_none();
-            let size = if own { 9.0 } else { 7.0 };
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at(point)
-                        + Polygon::new(triangle(course, size), track.colour.filled()),
-                ))
-                .map_err(to_text)?;
-            if own {
-                chart
-                    .draw_series(std::iter::once(
-                        EmptyElement::at(point)
-                            + Text::new(
-                                format!("{:.0} min", marker_time_s / 60.0),
-                                (10, -6),
-                                (FAMILY, 12).into_font().color(&OWNSHIP_COLOUR),
-                            ),
-                    ))
-                    .map_err(to_text)?;
-            }
-        }
-        marker_time_s += interval_min * 60.0;
-    }
-    Ok(())
-}
-
-/// Start dots with the vessels' names, and goal crosses within the view.
-fn draw_starts_and_goals<DB: DrawingBackend>(
-    chart: &mut Chart<'_, DB>,
-    vessels: &[&Track<'_>],
-    view: &View,
-) -> Result<(), String> {
-    for track in vessels {
-        let colour = track.colour;
-        if let Some(&start) = track.points_nm.first() {
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at(start)
-                        + Circle::new((0, 0), 5, colour.filled())
-                        + Text::new(
-                            track.name.to_owned(),
-                            (8, 4),
-                            (FAMILY, 14).into_font().color(&colour),
-                        ),
-                ))
-                .map_err(to_text)?;
-        }
-        if let Some(goal) = track.goal_nm.filter(|goal| view.contains(*goal)) {
-            let own = track.evaluation.is_none();
-            let (size, width) = if own { (8, 3) } else { (5, 2) };
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at(goal) + Cross::new((0, 0), size, colour.stroke_width(width)),
-                ))
-                .map_err(to_text)?;
-            if own {
-                chart
-                    .draw_series(std::iter::once(
-                        EmptyElement::at(goal)
-                            + Text::new(
-                                "goal".to_owned(),
-                                (10, -6),
-                                (FAMILY, 14).into_font().color(&colour),
-                            ),
-                    ))
-                    .map_err(to_text)?;
-            }
-        }
-    }
-    Ok(())
-}
-
-/// Closest approaches: the two positions joined, the distance written
-/// (for the targets [`labelled`] picks).
-fn draw_closest_approaches<DB: DrawingBackend>(
-    chart: &mut Chart<'_, DB>,
-    data: &PlotData<'_>,
-) -> Result<(), String> {
-    let labels = labelled(&data.targets);
-    for (target, label) in data.targets.iter().zip(labels) {
-        let Some(evaluation) = target.evaluation else {
-            continue;
-        };
-        let step = data.step_at(evaluation.time_of_min_s);
-        let (Some(&own), Some(&other)) =
-            (data.ownship.points_nm.get(step), target.points_nm.get(step))
-        else {
-            continue;
-        };
-        let colour = target.colour;
-        chart
-            .draw_series(DashedLineSeries::new(
-                vec![own, other],
-                5,
-                4,
-                colour.stroke_width(2),
-            ))
-            .map_err(to_text)?;
-        chart
-            .draw_series(
-                [own, other]
-                    .into_iter()
-                    .map(|point| Circle::new(point, 4, colour.stroke_width(2))),
-            )
-            .map_err(to_text)?;
-        if !label {
-            continue;
-        }
-        let middle = (0.5 * (own.0 + other.0), 0.5 * (own.1 + other.1));
-        chart
-            .draw_series(std::iter::once(
-                EmptyElement::at(middle)
-                    + Text::new(
-                        format!(
-                            "{} {}",
-                            target.name,
-                            format_distance(evaluation.min_distance_m)
-                        ),
-                        (6, -16),
-                        (FAMILY, 13).into_font().color(&colour),
-                    ),
-            ))
-            .map_err(to_text)?;
-    }
-    Ok(())
-}
-
-/// The legend: every vessel with its encounter and closest approach, then
-/// the key to the symbols at the bottom.
-fn draw_legend<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    data: &PlotData<'_>,
-    interval_min: f64,
-) -> Result<(), String> {
-    let black = RGBColor(0, 0, 0);
-    let grey = RGBColor(90, 90, 90);
-    let (_, height) = area.dim_in_pixel();
-    let bottom = i32::try_from(height).unwrap_or(i32::MAX) - 150;
-    let x = 8;
-    let mut y = 60;
-    area.draw(&Text::new(
-        "Legend",
-        (x, y),
-        (FAMILY, 18).into_font().color(&black),
-    ))
-    .map_err(to_text)?;
-    y += 28;
-    let vessels: Vec<&Track<'_>> = std::iter::once(&data.ownship)
-        .chain(data.targets.iter())
-        .collect();
-    let two_lines = vessels.len() <= 16;
-    let line_height = if two_lines { 34 } else { 18 };
-    for (shown, track) in vessels.iter().enumerate() {
-        if y + line_height > bottom {
-            let rest = vessels.len() - shown;
-            area.draw(&Text::new(
-                format!("... and {rest} more"),
-                (x, y),
-                (FAMILY, 13).into_font().color(&grey),
-            ))
-            .map_err(to_text)?;
-            break;
-        }
-        let own = track.evaluation.is_none();
-        area.draw(&PathElement::new(
-            vec![(x, y + 7), (x + 28, y + 7)],
-            track.colour.stroke_width(if own { 3 } else { 2 }),
+    let Some(evaluation) = target.evaluation else {
+        return Ok(());
+    };
+    let step = data.step_at(evaluation.time_of_min_s);
+    let (Some(&own), Some(&other)) = (data.ownship.points_nm.get(step), target.points_nm.get(step))
+    else {
+        return Ok(());
+    };
+    let colour = target.colour;
+    chart
+        .draw_series(DashedLineSeries::new(
+            vec![own, other],
+            5,
+            4,
+            colour.stroke_width(2),
         ))
         .map_err(to_text)?;
-        let headline = match track.evaluation {
-            Some(evaluation) => format!("{}  {}", track.name, evaluation.encounter),
-            None if track.name == "ownship" => "ownship".to_owned(),
-            None => format!("{} (ownship)", track.name),
-        };
-        area.draw(&Text::new(
-            headline,
-            (x + 36, y),
-            (FAMILY, 14).into_font().color(&black),
-        ))
+    chart
+        .draw_series(
+            [own, other]
+                .into_iter()
+                .map(|point| Circle::new(point, 4, colour.stroke_width(2))),
+        )
         .map_err(to_text)?;
-        if two_lines && let Some(evaluation) = track.evaluation {
-            let verdict = if evaluation.compliant {
-                "ok"
-            } else {
-                "violation"
-            };
-            area.draw(&Text::new(
-                format!(
-                    "min {} at {:.1} min, {verdict}",
-                    format_distance(evaluation.min_distance_m),
-                    evaluation.time_of_min_s / 60.0
-                ),
-                (x + 36, y + 16),
-                (FAMILY, 12).into_font().color(&grey),
-            ))
-            .map_err(to_text)?;
-        }
-        y += line_height;
-    }
-    draw_symbol_key(area, data, (x, bottom), interval_min)
-}
-
-/// The key to the chart's symbols, from `(x, bottom)` down: start, course
-/// marker, goal, closest approach, `d_th`, and traffic lanes when there are any.
-fn draw_symbol_key<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    data: &PlotData<'_>,
-    (x, bottom): (i32, i32),
-    interval_min: f64,
-) -> Result<(), String> {
-    let black = RGBColor(0, 0, 0);
-    let grey = RGBColor(90, 90, 90);
-    let mut y = bottom + 10;
-    let step = 22;
-    let symbol_x = x + 14;
-    area.draw(&(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 5, black.filled())))
-        .map_err(to_text)?;
-    key_label(area, "start", (x + 36, y))?;
-    y += step;
-    area.draw(
-        &(EmptyElement::at((symbol_x, y + 7))
-            + Polygon::new(triangle(std::f64::consts::FRAC_PI_2, 8.0), black.filled())),
-    )
-    .map_err(to_text)?;
-    key_label(
-        area,
-        format!("course, every {interval_min:.0} min"),
-        (x + 36, y),
-    )?;
-    y += step;
-    area.draw(
-        &(EmptyElement::at((symbol_x, y + 7)) + Cross::new((0, 0), 6, black.stroke_width(2))),
-    )
-    .map_err(to_text)?;
-    key_label(area, "goal", (x + 36, y))?;
-    y += step;
-    area.draw(&PathElement::new(
-        vec![(x, y + 7), (x + 8, y + 7)],
-        black.stroke_width(2),
-    ))
-    .map_err(to_text)?;
-    area.draw(&PathElement::new(
-        vec![(x + 13, y + 7), (x + 21, y + 7)],
-        black.stroke_width(2),
-    ))
-    .map_err(to_text)?;
-    key_label(area, "closest approach", (x + 36, y))?;
-    y += step;
-    area.draw(
-        &(EmptyElement::at((symbol_x, y + 7)) + Circle::new((0, 0), 8, grey.stroke_width(1))),
-    )
-    .map_err(to_text)?;
-    key_label(
-        area,
-        format!("d_th = {:.0} m around ownship", data.d_th_m),
-        (x + 36, y),
-    )?;
-    if !data.lanes.is_empty() {
-        y += step;
-        area.draw(&Rectangle::new(
-            [(x, y), (x + 28, y + 14)],
-            LANE_COLOUR.mix(0.3).filled(),
-        ))
-        .map_err(to_text)?;
-        area.draw(&Text::new(
-            "traffic lane (TSS)",
-            (x + 36, y),
-            (FAMILY, 13).into_font().color(&black),
-        ))
-        .map_err(to_text)?;
-    }
     Ok(())
 }

@@ -259,6 +259,14 @@ fn encounter_mark(target: &TargetReport) -> EncounterMark {
     }
 }
 
+/// An area's rings in metres, as the page draws them.
+fn area_polygon(area: &vorrt_scenarios::Area) -> Polygon {
+    area.rings_m
+        .iter()
+        .map(|ring| ring.iter().copied().map(point).collect())
+        .collect()
+}
+
 fn point(position_m: DVec2) -> [f64; 2] {
     [position_m.x, position_m.y]
 }
@@ -364,11 +372,15 @@ impl ReplayData {
                     width_m: lane.width_m(),
                 })
                 .collect(),
-            // Filled from the scenario once it carries land, no-go areas and
-            // separation zones (issue 26); the page draws whatever is here.
-            land: Vec::new(),
-            no_go: Vec::new(),
-            separation_zones: Vec::new(),
+            // The same polygons the planner kept off and the judge measured
+            // (decisions 29, 30), outer ring first then holes.
+            land: scenario.land_areas().map(area_polygon).collect(),
+            no_go: scenario.no_go.iter().map(area_polygon).collect(),
+            separation_zones: scenario
+                .separation_zones
+                .iter()
+                .map(|zone| vec![zone.vertices_in_m().into_iter().map(point).collect()])
+                .collect(),
             geo,
         }
     }

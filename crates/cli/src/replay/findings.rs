@@ -125,6 +125,8 @@ mod tests {
             max_alteration_deg: None,
             score: 0.5,
             assessment: None,
+            status: None,
+            undecided: false,
         }
     }
 

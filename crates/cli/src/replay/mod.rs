@@ -184,4 +184,24 @@ mod tests {
         assert!(html.contains("window.vorrtReplay"));
         assert!(!html.contains("{{DATA}}"));
     }
+
+    /// The page draws the land, no-go areas and separation zones the run
+    /// kept: the Dover crossing has its Natural Earth coast and its
+    /// separation zone in the page's data.
+    #[test]
+    fn the_page_carries_land_and_the_separation_zone() {
+        let fixture = crate::fixtures::BUNDLED
+            .iter()
+            .find(|fixture| fixture.stem() == "dover_tss_crossing")
+            .expect("bundled");
+        let scenario = crate::fixtures::load(fixture).unwrap();
+        let run = crate::run::run_scenario(&scenario, 1).unwrap();
+        let data = ReplayData::new(&scenario, &run.record, &run.evaluation, &run.report);
+        assert_eq!(data.land.len(), scenario.land_areas().count());
+        assert!(!data.land.is_empty());
+        assert!(data.land.iter().all(|polygon| polygon[0].len() >= 3));
+        assert_eq!(data.separation_zones.len(), 1);
+        assert_eq!(data.separation_zones[0][0].len(), 4);
+        assert!(data.no_go.is_empty());
+    }
 }

@@ -2,8 +2,10 @@
 //! over ground, ownship's path quality, and each target's encounter latched
 //! and assessed on the observed states.
 
+use super::noise::{TrackNoise, position_noise_m, track_noise, typical_speed_mps};
 use super::observe::{OverGround, over_ground_from};
 use super::quality::{PathQuality, path_quality};
+use super::status::NavigationalStatus;
 use super::{ObservedParameters, RecordedTrack, Recording};
 use crate::compliance::measure::closest_approach;
 use crate::compliance::{
@@ -56,6 +58,10 @@ impl std::fmt::Display for TrackFinding {
 }
 
 /// Ownship and one target, judged on the observed states.
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "a plain record of documented outcome flags"
+)]
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ObservedEncounter {
     /// The target's name.
@@ -82,6 +88,16 @@ pub struct ObservedEncounter {
     pub score: f64,
     /// Whether no rule was broken (safety findings do not count).
     pub compliant: bool,
+    /// The navigational status the target reported, if any: at anchor,
+    /// moored or aground it is judged as a stationary obstacle, on
+    /// clearance alone (rule 3(i); decision 32).
+    pub status: Option<NavigationalStatus>,
+    /// Whether the encounter was unfinished when the tracks ended: risk of
+    /// collision had arisen and the two were still closing at the last
+    /// sample, so the closest approach and the passing are not known. The
+    /// findings so far stand; the clearance kept and the passing side are
+    /// not a verdict (decision 32).
+    pub undecided: bool,
 }
 
 /// The judgement of a whole recording as observed.
@@ -97,6 +113,9 @@ pub struct ObservedJudgement {
     pub targets: Vec<ObservedEncounter>,
     /// No finding: no track finding and no rule broken in any encounter.
     pub compliant: bool,
+    /// Every track's jitter and what the judgement made of it (the window
+    /// and thresholds used), ownship first, then the targets in order.
+    pub noise: Vec<TrackNoise>,
 }
 
 /// Judges a recording on the track as sailed and as observed (see the
@@ -112,8 +131,19 @@ pub fn judge(
     parameters.validate()?;
     recording.validate()?;
     let times_s = &recording.times_s;
-    let window_s = parameters.window_s;
-    let ownship = observe(times_s, &recording.ownship, window_s);
+    let noise: Vec<TrackNoise> = std::iter::once(&recording.ownship)
+        .chain(&recording.targets)
+        .map(|track| noise_of(times_s, track, parameters))
+        .collect();
+    // Ownship's turns are judged above its own jitter (decision 31).
+    let own_parameters = above_noise(parameters, &noise[0]);
+    let jittery = |noise: &TrackNoise| noise.window_s > parameters.window_s;
+    let ownship = observe(
+        times_s,
+        &recording.ownship,
+        noise[0].window_s,
+        jittery(&noise[0]),
+    );
     let own_states = observed_states(&recording.ownship, &ownship);
     let courses: Vec<f64> = match &recording.ownship.courses_rad {
         Some(courses) => courses.clone(),
@@ -123,7 +153,7 @@ pub fn judge(
         times_s,
         &recording.ownship.positions_m,
         &courses,
-        &parameters.rules,
+        &own_parameters.rules,
     );
     let track_findings = parameters
         .max_turn_rate_rad_s
@@ -138,8 +168,9 @@ pub fn judge(
     let samples: Vec<Vec<EncounterSample>> = recording
         .targets
         .iter()
-        .map(|track| {
-            let observed = observe(times_s, track, window_s);
+        .zip(&noise[1..])
+        .map(|(track, noise)| {
+            let observed = observe(times_s, track, noise.window_s, jittery(noise));
             let states = observed_states(track, &observed);
             times_s
                 .iter()
@@ -149,12 +180,12 @@ pub fn judge(
                 .collect()
         })
         .collect();
-    let giving_way = giving_way_at(&samples, parameters);
+    let giving_way = giving_way_at(&samples, &recording.targets, &own_parameters);
     let targets: Vec<ObservedEncounter> = recording
         .targets
         .iter()
         .zip(&samples)
-        .map(|(track, samples)| judge_target(&track.name, samples, &giving_way, parameters))
+        .map(|(track, samples)| judge_target(track, samples, &giving_way, &own_parameters))
         .collect();
     let compliant = track_findings.is_empty() && targets.iter().all(|target| target.compliant);
     Ok(ObservedJudgement {
@@ -163,20 +194,97 @@ pub fn judge(
         track_findings,
         targets,
         compliant,
+        noise,
     })
 }
 
-/// The observed course and speed over ground of a track; with recorded
-/// courses, the vessel held its first course at its first step's speed
-/// before the start ([`over_ground_from`]).
-fn observe(times_s: &[f64], track: &RecordedTrack, window_s: f64) -> Vec<OverGround> {
+/// A track's jitter (the recording's estimate from the fixes, else one from
+/// its positions) and the window and thresholds that keep above it.
+fn noise_of(times_s: &[f64], track: &RecordedTrack, parameters: &ObservedParameters) -> TrackNoise {
+    let jitter_m = track
+        .observation
+        .position_noise_m
+        .or_else(|| position_noise_m(times_s, &track.positions_m))
+        .unwrap_or(0.0);
+    // Speeds over the longest window: over a short one, jitter adds speed
+    // to a slow vessel and so would lower its course jitter.
+    let longest_s = parameters.noise.max_window_s.max(parameters.window_s);
+    let speeds: Vec<f64> = observe(times_s, track, longest_s, false)
+        .iter()
+        .map(|over| over.speed_mps)
+        .collect();
+    track_noise(
+        jitter_m,
+        typical_speed_mps(&speeds),
+        parameters.window_s,
+        parameters.rules.turn_tolerance_rad,
+        parameters.scoring.action_detection_rad,
+        &parameters.noise,
+    )
+}
+
+/// The parameters a track is judged with: its window and its thresholds
+/// (equal to the given ones for a track without jitter).
+fn above_noise(parameters: &ObservedParameters, noise: &TrackNoise) -> ObservedParameters {
+    let mut judged = *parameters;
+    judged.window_s = noise.window_s;
+    judged.rules.turn_tolerance_rad = noise.turn_tolerance_rad;
+    judged.scoring.action_detection_rad = noise.action_detection_rad;
+    judged
+}
+
+/// The observed course and speed over ground of a track. Before the start
+/// the vessel is taken to have been in steady motion: with recorded
+/// courses, on its first course, at its first step's speed, or for a track
+/// whose jitter lengthened its window (`jittery`), at its first window's
+/// mean speed (its first step is jitter as much as motion; decision 31); for a
+/// track of positions only, at the velocity of its first window
+/// ([`over_ground_from`]).
+fn observe(
+    times_s: &[f64],
+    track: &RecordedTrack,
+    window_s: f64,
+    jittery: bool,
+) -> Vec<OverGround> {
+    let first_window = first_window_velocity_mps(times_s, &track.positions_m, window_s);
     let before_start_mps = match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
-        (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses
-            .first()
-            .map(|course| vorrt_geometry::angle::velocity(*course, p0.distance(*p1) / (t1 - t0))),
-        _ => None,
+        (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses.first().map(|course| {
+            let speed_mps = match first_window {
+                Some(velocity) if jittery => velocity.length(),
+                _ => p0.distance(*p1) / (t1 - t0),
+            };
+            vorrt_geometry::angle::velocity(*course, speed_mps)
+        }),
+        _ => first_window,
     };
     over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
+}
+
+/// The mean velocity over the first `window_s` of a track (or all of it,
+/// if shorter), m/s; `None` with fewer than two samples.
+fn first_window_velocity_mps(
+    times_s: &[f64],
+    positions_m: &[vorrt_geometry::DVec2],
+    window_s: f64,
+) -> Option<vorrt_geometry::DVec2> {
+    let (&t0, &p0) = (times_s.first()?, positions_m.first()?);
+    let count = times_s.len().min(positions_m.len());
+    if count < 2 {
+        return None;
+    }
+    let end_s = (t0 + window_s).min(times_s[count - 1]);
+    let after = times_s[..count]
+        .partition_point(|t| *t < end_s)
+        .min(count - 1);
+    let before = after.saturating_sub(1);
+    let (ta, tb) = (times_s[before], times_s[after]);
+    let fraction = if tb > ta {
+        ((end_s - ta) / (tb - ta)).clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    let end_m = positions_m[before].lerp(positions_m[after], fraction);
+    (end_s > t0).then(|| (end_m - p0) / (end_s - t0))
 }
 
 /// The observed states of a track: recorded positions, observed course and
@@ -196,11 +304,19 @@ fn observed_states(track: &RecordedTrack, observed: &[OverGround]) -> Vec<Vessel
 /// in force, latched on the observed states, in which it gives way, or
 /// stands on within the action range: [`acting_for_any`]): while it does, it
 /// may act for the vessels it stands on for ([`crate::rules::may_act`]).
-fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParameters) -> Vec<bool> {
+fn giving_way_at(
+    samples: &[Vec<EncounterSample>],
+    tracks: &[RecordedTrack],
+    parameters: &ObservedParameters,
+) -> Vec<bool> {
     let count = samples.first().map_or(0, Vec::len);
     let mut giving_way = vec![false; count];
     let steady = samples.first().map(|track| steady_courses_rad(track));
-    for track in samples {
+    for (track, _) in samples
+        .iter()
+        .zip(tracks)
+        .filter(|(_, recorded)| !at_rest(recorded))
+    {
         let mut latch = None;
         for ((sample, giving), steady_course_rad) in track
             .iter()
@@ -223,16 +339,42 @@ fn giving_way_at(samples: &[Vec<EncounterSample>], parameters: &ObservedParamete
     giving_way
 }
 
+/// Whether the vessel reported itself not under way (at anchor, moored,
+/// aground): a stationary obstacle.
+fn at_rest(track: &RecordedTrack) -> bool {
+    track
+        .observation
+        .status
+        .is_some_and(NavigationalStatus::is_at_rest)
+}
+
+/// Whether the two were still closing at the last sample: the closest
+/// approach is the end of the tracks, not a passing.
+fn still_closing(samples: &[EncounterSample], time_of_min_s: f64) -> bool {
+    match samples {
+        [.., before, last] => {
+            last.range_m() < before.range_m() && (last.time_s - time_of_min_s).abs() <= 1e-6
+        }
+        _ => false,
+    }
+}
+
 /// One target: latched and assessed on the observed states, or, if no risk
-/// ever arose, judged on clearance alone.
+/// ever arose or the target is at rest, judged on clearance alone.
 fn judge_target(
-    name: &str,
+    track: &RecordedTrack,
     samples: &[EncounterSample],
     giving_way: &[bool],
     parameters: &ObservedParameters,
 ) -> ObservedEncounter {
+    let name = track.name.as_str();
+    let status = track.observation.status;
     let scoring = &parameters.scoring;
-    let latch = first_latch(samples, &parameters.rules);
+    let latch = if at_rest(track) {
+        None
+    } else {
+        first_latch(samples, &parameters.rules)
+    };
     if let Some(latch) = latch {
         let assessment =
             assess_encounter_acting(samples, &latch, &parameters.rules, scoring, giving_way);
@@ -250,6 +392,8 @@ fn judge_target(
             findings: assessment.violations.clone(),
             score: assessment.scores.overall,
             compliant: assessment.compliant,
+            status,
+            undecided: !collision && still_closing(samples, assessment.time_of_min_s),
             assessment: Some(assessment),
         };
     }
@@ -285,5 +429,7 @@ fn judge_target(
             safety_score(min_distance_m, scoring)
         },
         compliant: true,
+        status,
+        undecided: false,
     }
 }

@@ -24,6 +24,29 @@
 //! it fully. Every judgement of an encounter reads these observed states,
 //! never a planner's waypoint courses.
 //!
+//! ## Noise
+//! Tracks recorded at sea jitter (AIS: about 3 m, a tail to 15 m); over a
+//! 60 s window that alone moves a slow vessel's COG by more than the 2°
+//! detectable change. Each track's jitter is estimated from its positions,
+//! or taken from the recording where it knows it better
+//! ([`TrackObservation::position_noise_m`], from the fixes before any
+//! resampling): [`position_noise_m`]. Its courses are then observed over a
+//! window lengthened until the COG jitter is within
+//! [`course_noise_budget_rad`](NoiseParameters::course_noise_budget_rad)
+//! (0.3°), up to [`max_window_s`](NoiseParameters::max_window_s) (600 s),
+//! and ownship's detectable change and action detection rise to 6 and 8 σ
+//! of the jitter of a change where that is more than 2° and 5°
+//! ([`track_noise`]; decision 31). An exact track (a closed-loop run's) has
+//! no jitter and is judged with the window and thresholds as given; every
+//! track's figures are in [`ObservedJudgement::noise`].
+//!
+//! ## Status and unfinished encounters
+//! A target reporting itself at anchor, moored or aground
+//! ([`TrackObservation::status`], [`NavigationalStatus::is_at_rest`]) is not
+//! under way (rule 3(i)): judged on clearance alone, never latched. An
+//! encounter whose vessels are still closing at the last sample is
+//! [`undecided`](ObservedEncounter::undecided) (decision 32).
+//!
 //! ## Path quality
 //! Of ownship's track ([`path_quality`]), from the recorded course where the
 //! recording gives one (the heading as sailed), else from the observed COG:
@@ -124,6 +147,7 @@
 //! | [`stand_on_action_range_m`](crate::RuleParameters::stand_on_action_range_m) | 2 nm | rule 17(a)(ii) action range (Woerner 2019) |
 //! | [`clearance_m`](crate::ScoringParameters::clearance_m) | 200 m | `d_th` (the paper's open-sea value; a run passes its own) |
 //! | [`max_turn_rate_rad_s`](ObservedParameters::max_turn_rate_rad_s) | none | the vessel's limit, when the recording has one |
+//! | [`noise`](ObservedParameters::noise) | 0.3°, 600 s, 6 σ, 8 σ | course-jitter budget, longest window, detectable change and action detection above the jitter (decision 31) |
 //!
 //! ## Example
 //!
@@ -138,6 +162,7 @@
 //!     length_m: 100.0,
 //!     positions_m: times_s.iter().map(|t| start + velocity * *t).collect(),
 //!     courses_rad: None,
+//!     observation: Default::default(),
 //! };
 //! let recording = Recording {
 //!     ownship: track("ownship", DVec2::ZERO, DVec2::new(0.0, 6.0)),
@@ -153,16 +178,24 @@
 //! ```
 
 mod judge;
+mod noise;
+#[cfg(test)]
+mod noise_tests;
 mod observe;
 mod parameters;
 mod quality;
+#[cfg(test)]
+mod real_tests;
 mod recording;
+mod status;
 #[cfg(test)]
 mod tests;
 
 pub use crate::compliance::episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
+pub use noise::{NoiseParameters, TrackNoise, position_noise_m, track_noise, typical_speed_mps};
 pub use observe::{OverGround, over_ground, over_ground_from};
 pub use parameters::ObservedParameters;
 pub use quality::{PathQuality, path_quality};
-pub use recording::{RecordedTrack, Recording};
+pub use recording::{RecordedTrack, Recording, TrackObservation};
+pub use status::NavigationalStatus;

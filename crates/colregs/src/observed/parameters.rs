@@ -1,5 +1,6 @@
 //! Every constant of the observed judgement, in one struct.
 
+use super::noise::NoiseParameters;
 use crate::compliance::ScoringParameters;
 use crate::error::ColregsError;
 use crate::parameters::RuleParameters;
@@ -28,6 +29,9 @@ pub struct ObservedParameters {
     /// the 20 % speed drop, the 2 nm early-action range, the 60 s grace
     /// time, the halved speed, the penalty weights.
     pub scoring: ScoringParameters,
+    /// How the observation window and the turn thresholds rise above a
+    /// track's jitter (decision 31).
+    pub noise: NoiseParameters,
 }
 
 impl Default for ObservedParameters {
@@ -37,6 +41,7 @@ impl Default for ObservedParameters {
             max_turn_rate_rad_s: None,
             rules: RuleParameters::default(),
             scoring: ScoringParameters::default(),
+            noise: NoiseParameters::default(),
         }
     }
 }
@@ -71,6 +76,13 @@ impl ObservedParameters {
                 field: "max_turn_rate_rad_s",
                 value: rate,
                 expected: "a finite rate greater than 0",
+            });
+        }
+        if let Err((field, value, expected)) = self.noise.check() {
+            return Err(ColregsError::InvalidParameter {
+                field,
+                value,
+                expected,
             });
         }
         self.rules.validate()?;

@@ -1,6 +1,7 @@
 //! What the observed judgement reads: the recorded tracks of ownship and
 //! every target on one time base.
 
+use super::status::NavigationalStatus;
 use crate::error::ColregsError;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -18,6 +19,26 @@ pub struct RecordedTrack {
     /// north, where the recording gives it; `None` where it gives positions
     /// only (the path quality then reads the observed course over ground).
     pub courses_rad: Option<Vec<f64>>,
+    /// What is known of how the track was observed: the fixes' jitter and
+    /// the vessel's navigational status (default: nothing known, the
+    /// jitter estimated from `positions_m`).
+    #[serde(default)]
+    pub observation: TrackObservation,
+}
+
+/// What a recording knows of how one track was observed, beyond its
+/// positions.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default)]
+pub struct TrackObservation {
+    /// The position jitter of the vessel's fixes (1 σ), metres, estimated
+    /// from the fixes themselves before any resampling
+    /// ([`position_noise_m`](super::position_noise_m)); `None`: estimated
+    /// from `positions_m` (0 for a closed-loop run's exact tracks).
+    pub position_noise_m: Option<f64>,
+    /// The navigational status the vessel reported (AIS); `None`: not
+    /// reported, a vessel under way.
+    pub status: Option<NavigationalStatus>,
 }
 
 /// A recorded run: sample times, ownship's track and every target's, each
@@ -47,6 +68,7 @@ impl Recording {
     /// let track = |n: usize| RecordedTrack {
     ///     name: "ownship".into(), length_m: 100.0,
     ///     positions_m: vec![DVec2::ZERO; n], courses_rad: None,
+    ///     observation: Default::default(),
     /// };
     /// let good = Recording { times_s: vec![0.0, 5.0], ownship: track(2), targets: vec![] };
     /// assert!(good.validate().is_ok());
@@ -86,6 +108,13 @@ impl Recording {
             if let Some(index) = track.positions_m.iter().position(|p| !p.is_finite()) {
                 return invalid(format!(
                     "vessel `{name}`: positions_m[{index}] is not finite"
+                ));
+            }
+            if let Some(noise_m) = track.observation.position_noise_m
+                && !(noise_m.is_finite() && noise_m >= 0.0)
+            {
+                return invalid(format!(
+                    "vessel `{name}`: observation.position_noise_m is {noise_m}, expected a finite distance of at least 0"
                 ));
             }
             if let Some(courses) = &track.courses_rad {

@@ -96,12 +96,14 @@ fn sail(mut own: Sailor<'_>, mut target: Sailor<'_>, duration_s: f64) -> Recordi
             length_m: 100.0,
             positions_m: own_m,
             courses_rad: Some(own_courses),
+            observation: TrackObservation::default(),
         },
         targets: vec![RecordedTrack {
             name: "TS1".into(),
             length_m: 100.0,
             positions_m: target_m,
             courses_rad: None,
+            observation: TrackObservation::default(),
         }],
     }
 }

@@ -21,6 +21,7 @@
 use super::Planner;
 use crate::config::PlannerConfig;
 use crate::constraint::Constraint;
+use crate::crossing::speed_on_course;
 use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::Recording;
@@ -43,6 +44,11 @@ pub enum ManeuverShape {
     /// action (a stand-on vessel's, rule 17); an alteration held, then the
     /// course before it resumed.
     TwoAlterations,
+    /// A change of speed on the course to the goal held, then the goal
+    /// ([`speed_on_course`]): a lane crossing, square to the flow (rule
+    /// 10(c)), timed to a gap in the lane's traffic; first of
+    /// [`LANE_CROSSING_LADDER`].
+    SpeedOnCourse,
 }
 
 /// The clearance a rung is searched at.
@@ -82,6 +88,24 @@ pub const ROOT_LADDER: [Rung; 4] = [
         shape: ManeuverShape::TwoAlterations,
         clearance: ClearanceLevel::Floor,
     },
+];
+
+/// The search from the root for a route that crosses a traffic lane
+/// ([`Constraint::prefers_speed_changes`]): the crossing timed by speed
+/// first, then [`ROOT_LADDER`] (decision 30).
+pub const LANE_CROSSING_LADDER: [Rung; 6] = [
+    Rung {
+        shape: ManeuverShape::SpeedOnCourse,
+        clearance: ClearanceLevel::Preferred,
+    },
+    Rung {
+        shape: ManeuverShape::SpeedOnCourse,
+        clearance: ClearanceLevel::Floor,
+    },
+    ROOT_LADDER[0],
+    ROOT_LADDER[1],
+    ROOT_LADDER[2],
+    ROOT_LADDER[3],
 ];
 
 /// Which clearance of a shape is asked first; the rung that wins is the
@@ -229,6 +253,14 @@ impl<C: Constraint> Planner<C> {
                 problem.goal_m,
                 &root,
             ),
+            ManeuverShape::SpeedOnCourse => speed_on_course(
+                &model,
+                &recording,
+                start,
+                sailing.speeds,
+                problem.goal_m,
+                &root,
+            ),
             ManeuverShape::OneAlteration => simplify_after(
                 &model,
                 &recording,
@@ -274,8 +306,13 @@ impl<C: Constraint> Planner<C> {
             ..self.config
         };
         let goal = [problem.goal_m];
+        let ladder: &[Rung] = if self.constraint.prefers_speed_changes() {
+            &LANE_CROSSING_LADDER
+        } else {
+            &ROOT_LADDER
+        };
         let legs = climb(
-            &ROOT_LADDER,
+            ladder,
             probe,
             self.config.preferred_clearance_factor > 1.0,
             |rung| {
@@ -298,7 +335,10 @@ impl<C: Constraint> Planner<C> {
         Ok(legs.map(|(shape, legs)| {
             let mut plan = self.assemble(problem, &sailing, 0, legs, statistics);
             plan.statistics.source = match shape {
-                ManeuverShape::OneAlteration => PlanSource::OneAlteration,
+                // A change of speed held is one alteration.
+                ManeuverShape::OneAlteration | ManeuverShape::SpeedOnCourse => {
+                    PlanSource::OneAlteration
+                }
                 ManeuverShape::TwoAlterations => PlanSource::TwoAlterations,
             };
             plan

@@ -25,7 +25,7 @@ use crate::sampler::Sampler;
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator, check_legs_with};
 use extract::Expired;
-pub use extract::{ClearanceLevel, ManeuverShape, Probe, ROOT_LADDER, Rung};
+pub use extract::{ClearanceLevel, LANE_CROSSING_LADDER, ManeuverShape, Probe, ROOT_LADDER, Rung};
 use glam::DVec2;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};

@@ -4,6 +4,7 @@ use super::BatchItem;
 use crate::evaluation::{Evaluation, TargetEvaluation, succeeded};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
+use vorrt_colregs::rule10::Rule10Clause;
 use vorrt_colregs::{ComplianceViolation, Role};
 
 /// The results of one scenario of a batch: one CSV row.
@@ -94,6 +95,35 @@ pub struct BatchRow {
     /// the column existed.
     #[serde(default = "not_recorded")]
     pub time_overhead_pct: f64,
+    /// The least distance from ownship's track to land, metres
+    /// ([`Evaluation::min_land_distance_m`]); empty when the scenario has
+    /// no land (or the row predates the column).
+    #[serde(default)]
+    pub min_land_distance_m: Option<f64>,
+    /// Whether ownship's track touched or crossed land.
+    #[serde(default)]
+    pub grounding: bool,
+    /// Whether it came within `land_clearance_m` of land.
+    #[serde(default)]
+    pub land_clearance_violation: bool,
+    /// Lanes crossed (rule 10, on the track as sailed).
+    #[serde(default)]
+    pub lane_crossings: usize,
+    /// Of those, the ones within the crossing tolerance of perpendicular
+    /// to the flow (10(c)).
+    #[serde(default)]
+    pub lane_crossings_square: usize,
+    /// The largest angle of the heading from perpendicular to the flow in
+    /// any crossing, degrees (empty without a crossing).
+    #[serde(default)]
+    pub crossing_off_perpendicular_deg: Option<f64>,
+    /// Stretches inside a separation zone other than crossing it (10(e)).
+    #[serde(default)]
+    pub separation_zone_entries: usize,
+    /// Every distinct rule-10 finding (as sailed), `;`-separated
+    /// (`rule_10c_crossing_not_square`).
+    #[serde(default)]
+    pub rule10_findings: String,
 }
 
 /// A value a row read back from an older `rows.csv` lacks.
@@ -103,12 +133,17 @@ fn not_recorded() -> f64 {
 
 impl BatchRow {
     /// Whether the run counts as a success: [`Evaluation::success`] of the
-    /// row's evaluation (goal reached, no collision, `d_th` kept); a run that
-    /// could not be made never does.
+    /// row's evaluation (goal reached, no collision and no grounding, `d_th`
+    /// and the land clearance kept); a run that could not be made never
+    /// does.
     #[must_use]
     pub fn success(&self) -> bool {
         self.error.is_empty()
-            && succeeded(self.reached_goal, self.collision, !self.clearance_violation)
+            && succeeded(
+                self.reached_goal,
+                self.collision || self.grounding,
+                !self.clearance_violation && !self.land_clearance_violation,
+            )
     }
 
     /// The compliance with `rule` (13-17), as in the row.
@@ -160,6 +195,14 @@ impl BatchRow {
             give_way_early: 0,
             rule_departures: 0,
             time_overhead_pct: f64::NAN,
+            min_land_distance_m: None,
+            grounding: false,
+            land_clearance_violation: false,
+            lane_crossings: 0,
+            lane_crossings_square: 0,
+            crossing_off_perpendicular_deg: None,
+            separation_zone_entries: 0,
+            rule10_findings: String::new(),
         }
     }
 
@@ -189,6 +232,9 @@ impl BatchRow {
             min_distance_m: evaluation.min_distance_m,
             clearance_m: evaluation.clearance_m,
             clearance_violation: !evaluation.clearance_kept,
+            min_land_distance_m: evaluation.min_land_distance_m,
+            grounding: evaluation.grounding,
+            land_clearance_violation: !evaluation.land_clearance_kept,
             compliant: evaluation.compliant,
             rule_13: rule(13),
             rule_14: rule(14),
@@ -229,6 +275,24 @@ impl BatchRow {
             }),
             rule_departures: evaluation.rule_departures,
             time_overhead_pct: evaluation.time_overhead_pct,
+            lane_crossings: evaluation.rule10.crossings.len(),
+            lane_crossings_square: evaluation.rule10.square_crossings(),
+            crossing_off_perpendicular_deg: evaluation
+                .rule10
+                .crossings
+                .iter()
+                .map(|crossing| crossing.max_off_perpendicular_deg)
+                .reduce(f64::max),
+            separation_zone_entries: evaluation.rule10.count(Rule10Clause::SeparationZone),
+            rule10_findings: evaluation
+                .rule10
+                .findings
+                .iter()
+                .map(|finding| finding.clause.key())
+                .collect::<BTreeSet<_>>()
+                .into_iter()
+                .collect::<Vec<_>>()
+                .join(";"),
         }
     }
 }

@@ -87,7 +87,8 @@ pub struct BatchSummary {
     pub errors: usize,
     /// Fraction that reached the goal.
     pub reached_goal_rate: f64,
-    /// Fraction that reached the goal with no collision and `d_th` kept
+    /// Fraction that reached the goal with no collision or grounding and
+    /// `d_th` and the land clearance kept
     /// ([`BatchRow::success`]).
     pub success_rate: f64,
     /// Fraction with a collision (hulls touching).
@@ -137,6 +138,33 @@ pub struct BatchSummary {
     /// graded fallback plan or the evasive manoeuvre).
     #[serde(default)]
     pub runs_with_rule_departures: usize,
+    /// Runs whose track touched or crossed land (a safety failure).
+    #[serde(default)]
+    pub groundings: usize,
+    /// Runs whose track came within `land_clearance_m` of land.
+    #[serde(default)]
+    pub land_clearance_violations: usize,
+    /// The least distance to land per run with land, metres.
+    #[serde(default)]
+    pub min_land_distance_m: Percentiles,
+    /// Lane crossings over the batch (rule 10, as sailed).
+    #[serde(default)]
+    pub lane_crossings: usize,
+    /// The share of them within the crossing tolerance of perpendicular
+    /// to the flow (10(c)); `None` without a crossing.
+    #[serde(default)]
+    pub lane_crossing_square_rate: Option<f64>,
+    /// Per run with a crossing, the largest angle of the heading from
+    /// perpendicular to the flow, degrees.
+    #[serde(default)]
+    pub crossing_off_perpendicular_deg: Percentiles,
+    /// Runs with a stretch inside a separation zone other than crossing it
+    /// (10(e)).
+    #[serde(default)]
+    pub runs_with_separation_zone_entry: usize,
+    /// Runs with any rule-10 finding.
+    #[serde(default)]
+    pub runs_with_rule10_findings: usize,
 }
 
 impl BatchSummary {
@@ -175,6 +203,7 @@ impl BatchSummary {
             .collect();
         let ran: Vec<&&BatchRow> = rows.iter().filter(|row| row.error.is_empty()).collect();
         let give_way_encounters: usize = ran.iter().map(|row| row.give_way_encounters).sum();
+        let lane_crossings: usize = ran.iter().map(|row| row.lane_crossings).sum();
         let share = |count: usize| {
             (give_way_encounters > 0).then(|| count as f64 / give_way_encounters as f64)
         };
@@ -206,6 +235,33 @@ impl BatchSummary {
             give_way_apparent_rate: share(ran.iter().map(|row| row.give_way_apparent).sum()),
             give_way_early_rate: share(ran.iter().map(|row| row.give_way_early).sum()),
             runs_with_rule_departures: rows.iter().filter(|row| row.rule_departures > 0).count(),
+            groundings: ran.iter().filter(|row| row.grounding).count(),
+            land_clearance_violations: ran
+                .iter()
+                .filter(|row| row.land_clearance_violation)
+                .count(),
+            min_land_distance_m: Percentiles::of(
+                ran.iter().filter_map(|row| row.min_land_distance_m),
+            ),
+            lane_crossings,
+            lane_crossing_square_rate: (lane_crossings > 0).then(|| {
+                ran.iter()
+                    .map(|row| row.lane_crossings_square)
+                    .sum::<usize>() as f64
+                    / lane_crossings as f64
+            }),
+            crossing_off_perpendicular_deg: Percentiles::of(
+                ran.iter()
+                    .filter_map(|row| row.crossing_off_perpendicular_deg),
+            ),
+            runs_with_separation_zone_entry: ran
+                .iter()
+                .filter(|row| row.separation_zone_entries > 0)
+                .count(),
+            runs_with_rule10_findings: ran
+                .iter()
+                .filter(|row| !row.rule10_findings.is_empty())
+                .count(),
         }
     }
 

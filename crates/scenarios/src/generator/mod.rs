@@ -50,7 +50,7 @@ use thiserror::Error;
 use vorrt_colregs::Encounter;
 
 /// The most targets an open-sea scenario may be generated with.
-pub const MAX_GENERATED_TARGETS: usize = 64;
+pub const MAX_GENERATED_TARGETS: usize = 256;
 
 /// Ownship's length in every generated scenario, metres.
 pub const OWNSHIP_LENGTH_M: f64 = 100.0;

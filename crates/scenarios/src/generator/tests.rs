@@ -31,9 +31,13 @@ fn bad_specs_are_refused() {
         Err(GeneratorError::InvalidSpec(_))
     ));
     assert!(matches!(
-        open_sea(&OpenSeaSpec::with_targets(65), 1, 0),
+        open_sea(&OpenSeaSpec::with_targets(MAX_GENERATED_TARGETS + 1), 1, 0),
         Err(GeneratorError::InvalidSpec(_))
     ));
+    // As many as a scenario may hold (issue 24: many vessels).
+    assert_eq!(MAX_GENERATED_TARGETS, crate::MAX_TARGETS);
+    let most = open_sea(&OpenSeaSpec::with_targets(MAX_GENERATED_TARGETS), 1, 0).expect("valid");
+    assert_eq!(most.targets.len(), MAX_GENERATED_TARGETS);
     let mut spec = OpenSeaSpec::with_targets(2);
     spec.mix = EncounterMix {
         head_on: 0.0,

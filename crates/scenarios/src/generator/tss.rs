@@ -3,6 +3,7 @@
 use super::random::{behaviour_stream, round_to, run_seed, scenario_stream, uniform, uniform_in};
 use super::{GeneratorError, OWNSHIP_LENGTH_M, TargetBehaviour, check_range, planner_for_route};
 use crate::scenario::{Lane, Scenario, SimulationSettings, VesselSpec};
+use crate::scheme::SeparationZoneSpec;
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::units;
 
@@ -15,8 +16,9 @@ pub enum TssDirection {
     Westbound,
     /// One lane, traffic flowing east (course 090).
     Eastbound,
-    /// Two lanes with a separation zone between them: eastbound to the south,
-    /// westbound to the north (each flow keeps the zone on its port side).
+    /// Two lanes with a separation zone between them (the scenario's
+    /// `separation_zones`): eastbound to the south, westbound to the north
+    /// (each flow keeps the zone on its port side).
     TwoWay,
 }
 
@@ -129,12 +131,7 @@ fn tss_lanes(spec: &TssSpec, half_length_nm: f64) -> Vec<(Lane, f64)> {
             (-half_length_nm, half_length_nm)
         };
         (
-            Lane {
-                name: name.into(),
-                from_nm: (from, centre),
-                to_nm: (to, centre),
-                width_nm: spec.lane_width_nm,
-            },
+            Lane::new_nm(name, (from, centre), (to, centre), spec.lane_width_nm),
             if westward { 270.0 } else { 90.0 },
         )
     };
@@ -158,6 +155,24 @@ fn tss_lanes(spec: &TssSpec, half_length_nm: f64) -> Vec<(Lane, f64)> {
 )]
 fn target_count(per_nm: f64, length_nm: f64) -> usize {
     ((per_nm * length_nm).round() as usize).max(1)
+}
+
+/// The separation zone of a two-way scheme: the strip between its lanes,
+/// `far_nm` each side of the crossing line (rule 10(e)); none for one lane.
+fn separation_zones(spec: &TssSpec, far_nm: f64) -> Vec<SeparationZoneSpec> {
+    let half_zone_nm = 0.5 * spec.separation_zone_nm;
+    if spec.direction != TssDirection::TwoWay || half_zone_nm <= 0.0 {
+        return Vec::new();
+    }
+    vec![SeparationZoneSpec::new_nm(
+        "separation zone",
+        vec![
+            (-far_nm, -half_zone_nm),
+            (far_nm, -half_zone_nm),
+            (far_nm, half_zone_nm),
+            (-far_nm, half_zone_nm),
+        ],
+    )]
 }
 
 /// Scenario `index` of a TSS batch seeded with `seed` (see [`TssSpec`]); the
@@ -190,7 +205,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     let stretches: Vec<(f64, f64)> = lanes_unsized
         .iter()
         .map(|(lane, _)| {
-            let centre = lane.from_nm.1;
+            let centre = lane.from_nm.map_or(0.0, |(_, north)| north);
             let enter_h = own_hours(centre - 0.5 * spec.lane_width_nm) - 5.0 / 60.0;
             let leave_h = own_hours(centre + 0.5 * spec.lane_width_nm) + 5.0 / 60.0;
             (slowest * enter_h.max(0.0), fastest * leave_h)
@@ -206,7 +221,7 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     let mut targets = Vec::new();
     for ((lane, course_deg), (near, far)) in lanes.iter().zip(&stretches) {
         let count = target_count(spec.targets_per_nm, far - near);
-        let centre = lane.from_nm.1;
+        let centre = lane.from_nm.map_or(0.0, |(_, north)| north);
         #[expect(clippy::float_cmp, reason = "courses are the literals 90 and 270")]
         let westward = *course_deg == 270.0;
         let half = (0.5 * spec.lane_width_nm - 0.05).max(0.0);
@@ -237,25 +252,23 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         }
     }
     let route_m = units::nautical_miles_to_m(2.0 * -start_north);
+    let (name, description) = describe(spec, seed, index, lanes.len(), targets.len(), own_speed_kn);
     let mut scenario = Scenario {
-        name: format!(
-            "tss-{}-{}pnm-{}-s{seed}-{index:05}",
-            spec.direction.name(),
-            spec.targets_per_nm,
-            spec.behaviour.name()
-        ),
-        description: Some(format!(
-            "Generated TSS crossing (seed {seed}, index {index}): {} lane(s) {} nm wide, {} targets/nm, {} targets; ownship north at {own_speed_kn} kn; clearance 100 m.",
-            lanes.len(),
-            spec.lane_width_nm,
-            spec.targets_per_nm,
-            targets.len()
-        )),
+        name,
+        description: Some(description),
         ownship,
         targets,
         planner: planner_for_route(route_m, Some(100.0)),
         simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
+        land: Vec::new(),
+        no_go: Vec::new(),
+        land_geojson: None,
+        land_clearance_m: None,
+        geojson_land: Vec::new(),
+        base_dir: None,
+        separation_zones: separation_zones(spec, far_nm),
+        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
@@ -264,4 +277,27 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     };
     scenario.validate()?;
     Ok(scenario)
+}
+
+/// The name and description of a generated TSS scenario.
+fn describe(
+    spec: &TssSpec,
+    seed: u64,
+    index: u64,
+    lanes: usize,
+    targets: usize,
+    own_speed_kn: f64,
+) -> (String, String) {
+    (
+        format!(
+            "tss-{}-{}pnm-{}-s{seed}-{index:05}",
+            spec.direction.name(),
+            spec.targets_per_nm,
+            spec.behaviour.name()
+        ),
+        format!(
+            "Generated TSS crossing (seed {seed}, index {index}): {lanes} lane(s) {} nm wide, {} targets/nm, {targets} targets; ownship north at {own_speed_kn} kn; clearance 100 m.",
+            spec.lane_width_nm, spec.targets_per_nm,
+        ),
+    )
 }

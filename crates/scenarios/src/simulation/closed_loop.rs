@@ -9,17 +9,18 @@ use super::planning::{
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::recorded::RecordedMotion;
 use super::target::{BehaviourTarget, TargetMotion};
+use crate::chart::Chart;
 use crate::error::ScenarioError;
 use crate::scenario::{Behaviour, Scenario};
+use crate::scheme::scenario_constraint;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
+use vorrt_planner::scheme::SchemeConstraint;
 use vorrt_planner::validity::EncounterState;
-use vorrt_planner::{
-    Constraint, NoConstraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem,
-};
+use vorrt_planner::{Constraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
@@ -134,8 +135,9 @@ fn graded_planners<C: Constraint + Clone>(
 #[derive(Debug)]
 struct Setup<C> {
     /// One planner per level of the graded fallback, all the rules first,
-    /// each keeping the run's constraint.
-    planners: Vec<Planner<C>>,
+    /// each keeping the scenario's chart (land, no-go areas) and the run's
+    /// constraint.
+    planners: Vec<Planner<(Chart, C)>>,
     config: PlannerConfig,
     seed: u64,
     time_step_s: f64,
@@ -157,10 +159,13 @@ struct Setup<C> {
 ///
 /// [`simulate`](super::simulate) is [`ClosedLoop::run`]; stepping by hand
 /// gives the same [`SimulationRecord`]. Ownship's planner keeps a user
-/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; none by default):
-/// every plan, every check of the plan in force and the evasive manoeuvre.
+/// [`Constraint`] too ([`ClosedLoop::with_constraint`]; by default the
+/// scenario's traffic separation scheme, [`scenario_constraint`], which
+/// refuses nothing without lanes), beside the scenario's [`Chart`] (land,
+/// no-go areas), which it always keeps: every plan, every check of the plan
+/// in force and the evasive manoeuvre.
 #[derive(Debug)]
-pub struct ClosedLoop<C = NoConstraint> {
+pub struct ClosedLoop<C = SchemeConstraint> {
     setup: Setup<C>,
     step: usize,
     time_s: f64,
@@ -246,6 +251,8 @@ impl ClosedLoop {
     /// As [`with_config`](Self::with_config), with every target moved by
     /// `motions` (one per scenario target, in its order, each at time 0)
     /// instead of its behaviour; the targets keep the scenario's names.
+    /// Ownship's planner keeps the scenario's traffic separation scheme
+    /// ([`scenario_constraint`]).
     ///
     /// ```
     /// use vorrt_scenarios::{ClosedLoop, RecordedMotion, Scenario, TimedState};
@@ -270,18 +277,26 @@ impl ClosedLoop {
         seed: u64,
         motions: Vec<Box<dyn TargetMotion>>,
     ) -> Result<Self, ScenarioError> {
-        ClosedLoop::with_constraint(scenario, config, seed, motions, NoConstraint)
+        ClosedLoop::with_constraint(
+            scenario,
+            config,
+            seed,
+            motions,
+            scenario_constraint(scenario),
+        )
     }
 }
 
 impl<C: Constraint + Clone> ClosedLoop<C> {
     /// As [`with_motions`](ClosedLoop::with_motions), with ownship's
-    /// planner keeping `constraint` (land, a no-go area, a lane) at every
+    /// planner keeping `constraint` (a no-go area, a lane) at every
     /// level of the graded fallback, in its check of the plan in force and
-    /// in the evasive manoeuvre.
+    /// in the evasive manoeuvre, beside the scenario's own [`Chart`] (its
+    /// land and no-go areas), which every run keeps.
     ///
     /// # Errors
-    /// As [`with_motions`](ClosedLoop::with_motions).
+    /// As [`with_motions`](ClosedLoop::with_motions); field `land` when the
+    /// scenario's areas were not validated.
     pub fn with_constraint(
         scenario: &Scenario,
         config: &PlannerConfig,
@@ -294,7 +309,8 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             field: field.into(),
             problem,
         };
-        let planners = graded_planners(config, &constraint)
+        let chart = Chart::from_scenario(scenario)?;
+        let planners = graded_planners(config, &(chart, constraint))
             .map_err(|error| invalid("planner", error.to_string()))?;
         if motions.len() != scenario.targets.len() {
             return Err(invalid(
@@ -339,6 +355,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             plans_kept: Vec::new(),
             config: *config,
             max_turn_rate_rad_s,
+            observations: Vec::new(),
             reached_goal: false,
             arrival_time_s: None,
         };

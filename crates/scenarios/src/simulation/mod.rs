@@ -40,6 +40,7 @@ use crate::scenario::Scenario;
 use vorrt_planner::PlannerConfig;
 
 mod closed_loop;
+mod commanded;
 mod planning;
 mod record;
 mod recorded;
@@ -48,6 +49,7 @@ mod target;
 pub use closed_loop::{
     ARRIVAL_TOLERANCE_M, ClosedLoop, Decision, LoopState, RunStatus, StepOutcome,
 };
+pub use commanded::{COMMANDED_GOAL_TOLERANCE_M, CommandError, CommandedRun};
 pub use planning::{
     EVASION_COURSES, EVASION_HORIZON_S, REFERENCE_MATCH_RAD, RETRY_AFTER_S, RETURN_MOVED_S,
 };

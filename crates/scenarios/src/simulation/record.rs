@@ -124,6 +124,12 @@ pub struct SimulationRecord {
     /// instantaneous turns, the paper's model).
     #[serde(default)]
     pub max_turn_rate_rad_s: Option<f64>,
+    /// How each track was observed, ownship first, then the targets in
+    /// order: the fixes' jitter and the reported navigational status, for
+    /// tracks recorded at sea (`vorrt judge`). Empty for a closed-loop run,
+    /// whose tracks are exact.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub observations: Vec<vorrt_colregs::observed::TrackObservation>,
     /// Whether ownship reached its goal.
     pub reached_goal: bool,
     /// When it did, seconds.
