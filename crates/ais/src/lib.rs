@@ -5,6 +5,7 @@ pub mod encode;
 pub mod error;
 pub mod import;
 pub mod log;
+pub mod replay;
 pub mod tag_block;
 
 pub use encode::{EncodeError, simulation_log};
@@ -14,6 +15,7 @@ pub use import::{
     estimate,
 };
 pub use log::{AisLog, LineCounts, PositionReport, SUPPORTED_TYPES, VesselTrack, read_log};
+pub use replay::{Replay, ReplayOptions, build_replay};
 pub use tag_block::{TagBlock, TagBlockError, split_tag_block};
 
 // The scenario an import builds, so that this crate alone is enough.

@@ -6,7 +6,10 @@ use crate::console;
 use crate::error::{CliError, ExitStatus};
 use clap::Args;
 use std::path::PathBuf;
-use vorrt_ais::{DEFAULT_RANGE_NM, ImportOptions, LineCounts, build_scenario, read_log};
+use vorrt_ais::{
+    DEFAULT_RANGE_NM, ImportOptions, LineCounts, ReplayOptions, build_replay, build_scenario,
+    read_log,
+};
 
 /// `vorrt import-ais`.
 #[derive(Debug, Clone, Args)]
@@ -21,9 +24,22 @@ pub(crate) struct ImportAisArgs {
     /// Ownship's MMSI.
     #[arg(long, value_name = "MMSI")]
     pub(crate) ownship: u32,
-    /// Ownship's goal, degrees: LAT,LON (e.g. 50.3,-0.8).
-    #[arg(long, value_name = "LAT,LON", allow_hyphen_values = true)]
-    pub(crate) goal: String,
+    /// Ownship's goal, degrees: LAT,LON (e.g. 50.3,-0.8) [required without
+    /// --replay; with it, default: ownship's last recorded position].
+    #[arg(
+        long,
+        value_name = "LAT,LON",
+        allow_hyphen_values = true,
+        required_unless_present = "replay"
+    )]
+    pub(crate) goal: Option<String>,
+    /// Write a replay: every other vessel follows its recorded track (in
+    /// SCENARIO.tracks.csv beside the scenario), ownship starts from its
+    /// recorded state at the start [default start: when every vessel has
+    /// been seen]. `vorrt simulate` sails vorrt among them; `vorrt judge
+    /// SCENARIO.tracks.csv --scenario SCENARIO.ron` judges the human.
+    #[arg(long)]
+    pub(crate) replay: bool,
     /// The scenario file to write (RON).
     #[arg(long, value_name = "SCENARIO.ron")]
     pub(crate) out: PathBuf,
@@ -43,6 +59,15 @@ pub(crate) struct ImportAisArgs {
     /// --coast, nautical miles.
     #[arg(long, value_name = "NM", default_value_t = crate::coast::DEFAULT_COAST_MARGIN_NM)]
     pub(crate) coast_margin_nm: f64,
+}
+
+/// The tracks file of the replay scenario `out`: `<stem>.tracks.csv`,
+/// beside it.
+fn tracks_file_name(out: &std::path::Path) -> String {
+    let stem = out
+        .file_stem()
+        .map_or_else(|| "replay".into(), |stem| stem.to_string_lossy());
+    format!("{stem}.tracks.csv")
 }
 
 fn parse_goal(text: &str) -> Result<(f64, f64), CliError> {
@@ -91,7 +116,7 @@ fn describe_counts(counts: &LineCounts) -> String {
 /// ownship is not in the log or has no position; [`CliError::Output`] when
 /// the scenario cannot be written.
 pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, CliError> {
-    let goal_lat_lon = parse_goal(&args.goal)?;
+    let goal_lat_lon = args.goal.as_deref().map(parse_goal).transpose()?;
     let at_unix_s = args.at.as_deref().map(parse_time).transpose()?;
     let bytes = std::fs::read(&args.log).map_err(|error| {
         CliError::BadInput(format!("cannot read {}: {error}", args.log.display()))
@@ -103,25 +128,47 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
         args.log.display(),
         describe_counts(&log.counts)
     ));
-    let options = ImportOptions {
-        log_name: args.log.display().to_string(),
-        ownship_mmsi: args.ownship,
-        goal_lat_lon,
-        at_unix_s,
-        range_nm: args.range_nm,
+    let log_name = args.log.display().to_string();
+    let (mut scenario, notes, tracks) = if args.replay {
+        let tracks_file = tracks_file_name(&args.out);
+        let replay = build_replay(
+            &log,
+            &ReplayOptions {
+                log_name,
+                ownship_mmsi: args.ownship,
+                goal_lat_lon,
+                at_unix_s,
+                range_nm: args.range_nm,
+                tracks_file: tracks_file.clone(),
+            },
+        )
+        .map_err(|error| CliError::BadInput(error.to_string()))?;
+        (
+            replay.scenario,
+            replay.notes,
+            Some((args.out.with_file_name(tracks_file), replay.tracks_csv)),
+        )
+    } else {
+        let options = ImportOptions {
+            log_name,
+            ownship_mmsi: args.ownship,
+            // Clap requires --goal without --replay.
+            goal_lat_lon: goal_lat_lon.unwrap_or_default(),
+            at_unix_s,
+            range_nm: args.range_nm,
+        };
+        let import = build_scenario(&log, &options)
+            .map_err(|error| CliError::BadInput(error.to_string()))?;
+        (import.scenario, import.notes, None)
     };
-    let mut import =
-        build_scenario(&log, &options).map_err(|error| CliError::BadInput(error.to_string()))?;
-    for note in &import.notes {
+    for note in &notes {
         console::warn(&format!("note: {note}"));
     }
     if let Some(coast) = &args.coast {
-        let land =
-            crate::coast::add_land(&import.scenario, coast, args.coast_margin_nm, &args.out)?;
-        import.scenario.land_geojson = Some(land.to_owned());
+        let land = crate::coast::add_land(&scenario, coast, args.coast_margin_nm, &args.out)?;
+        scenario.land_geojson = Some(land.to_owned());
     }
-    let text = import
-        .scenario
+    let text = scenario
         .to_ron_string()
         .map_err(|error| CliError::Output(error.to_string()))?;
     if let Some(parent) = args
@@ -133,9 +180,15 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
             CliError::Output(format!("cannot create {}: {error}", parent.display()))
         })?;
     }
-    std::fs::write(&args.out, text).map_err(|error| {
-        CliError::Output(format!("cannot write {}: {error}", args.out.display()))
-    })?;
+    let write = |path: &std::path::Path, text: &str| {
+        std::fs::write(path, text)
+            .map_err(|error| CliError::Output(format!("cannot write {}: {error}", path.display())))
+    };
+    write(&args.out, &text)?;
+    if let Some((path, csv)) = &tracks {
+        write(path, csv)?;
+        console::line(&format!("wrote {}: the recorded tracks", path.display()));
+    }
     // The coast may put a vessel on land, or within the land clearance of
     // it: say so now, with the format's own message, not at the first run.
     if args.coast.is_some()
@@ -149,10 +202,9 @@ pub(crate) fn import_ais_command(args: &ImportAisArgs) -> Result<ExitStatus, Cli
     console::line(&format!(
         "wrote {}: ownship {:?} and {} targets{}",
         args.out.display(),
-        import.scenario.ownship.name,
-        import.scenario.targets.len(),
-        import
-            .scenario
+        scenario.ownship.name,
+        scenario.targets.len(),
+        scenario
             .start_time
             .as_deref()
             .map(|time| format!(" at {time}"))

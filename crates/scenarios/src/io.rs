@@ -3,6 +3,7 @@
 //! content (decision 34).
 
 use crate::error::ScenarioError;
+use crate::recorded_tracks::RecordedTracks;
 use crate::scenario::Scenario;
 use ron::extensions::Extensions;
 use ron::ser::PrettyConfig;
@@ -199,11 +200,15 @@ impl Scenario {
     }
 
     /// Reads, parses and validates the scenario file at `path`, RON or JSON
-    /// as [`ScenarioFormat::detect`] says. When the format was guessed from
-    /// the content, a syntax error says which format was tried.
+    /// as [`ScenarioFormat::detect`] says (when the format was guessed from
+    /// the content, a syntax error says which format was tried), and the
+    /// recorded tracks it names (`recorded_tracks`, relative to the file's
+    /// folder) into [`Scenario::recorded`].
     ///
     /// # Errors
-    /// [`ScenarioError::Io`] when the file cannot be read, else as
+    /// [`ScenarioError::Io`] when the file or its tracks cannot be read, a
+    /// [`ScenarioError::Invalid`] naming the tracks file, line and field
+    /// for a bad row, or a `Recorded` target without a track; else as
     /// [`Scenario::from_ron_str`] or [`Scenario::from_json_str`].
     pub fn load(path: &Path) -> Result<Scenario, ScenarioError> {
         let text = std::fs::read_to_string(path).map_err(|source| ScenarioError::Io {
@@ -216,7 +221,7 @@ impl Scenario {
             ScenarioFormat::Ron => Self::parse_ron(&text, &source, path.parent()),
             ScenarioFormat::Json => Self::parse_json(&text, &source, path.parent()),
         };
-        loaded.map_err(|error| match error {
+        let mut scenario = loaded.map_err(|error| match error {
             ScenarioError::Syntax {
                 file,
                 line,
@@ -236,7 +241,29 @@ impl Scenario {
                 },
             },
             other => other,
-        })
+        })?;
+        scenario.read_recorded_tracks(path)?;
+        Ok(scenario)
+    }
+
+    /// Reads the tracks file `recorded_tracks` names, beside the scenario
+    /// file at `path`, into [`Scenario::recorded`] (decision 40).
+    fn read_recorded_tracks(&mut self, path: &Path) -> Result<(), ScenarioError> {
+        let Some(relative) = &self.recorded_tracks else {
+            return Ok(());
+        };
+        let tracks_path = path.parent().unwrap_or(Path::new("")).join(relative);
+        let text = std::fs::read_to_string(&tracks_path).map_err(|source| ScenarioError::Io {
+            path: tracks_path.clone(),
+            source,
+        })?;
+        self.recorded = RecordedTracks::from_csv_str(
+            &text,
+            &tracks_path.display().to_string(),
+            self.local_frame().as_ref(),
+            |vessel| self.vessel_length_m(vessel),
+        )?;
+        self.check_recorded()
     }
 
     /// The scenario as pretty-printed JSON (four-space indent, a final line
@@ -374,6 +401,8 @@ mod tests {
             seed: Some(u64::MAX),
             start_time: None,
             source: "everything".into(),
+            recorded_tracks: None,
+            recorded: crate::RecordedTracks::default(),
         }
     }
 

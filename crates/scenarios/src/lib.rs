@@ -14,6 +14,7 @@ pub mod geo;
 pub mod geojson_land;
 pub mod io;
 pub mod planner_settings;
+pub mod recorded_tracks;
 pub mod scenario;
 pub mod scheme;
 pub mod simulation;
@@ -35,6 +36,7 @@ pub use io::{
     JSON_SCENARIO_EXTENSION, SCENARIO_EXTENSION, ScenarioFormat, bundled_fixtures_dir, load_dir,
 };
 pub use planner_settings::PlannerSettings;
+pub use recorded_tracks::RecordedTracks;
 pub use scenario::{
     Behaviour, COLREGS_TURN_DEG, DEFAULT_DURATION_FACTOR, DEFAULT_REPLAN_DEVIATION_M,
     DEFAULT_TIME_STEP_S, Lane, NOISE_TIME_CONSTANT_S, Scenario, SimulationSettings, VesselSpec,

@@ -8,6 +8,7 @@ use crate::geo::{
     LocalFrame, MAX_GEO_EXTENT_NM, ProjectedPositions, check_lat_lon, parse_utc_time,
 };
 use crate::planner_settings::PlannerSettings;
+use crate::recorded_tracks::RecordedTracks;
 use crate::scheme::{Rule10Settings, SeparationZoneSpec};
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
@@ -91,6 +92,17 @@ pub struct Scenario {
     /// file, not written out, and ignored by `==`.
     #[serde(skip)]
     pub source: String,
+    /// The recorded tracks its [`Behaviour::Recorded`] targets follow: a CSV
+    /// file (`vessel,time_s` and `lat_deg,lon_deg` or `east_m,north_m`,
+    /// optional `course_deg,speed_kn`), its path relative to the scenario
+    /// file's folder. Read by [`Scenario::load`] into `recorded`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub recorded_tracks: Option<String>,
+    /// The tracks read from `recorded_tracks`, per vessel name, in the
+    /// scenario's frame (times in seconds from the run's start; decision 40).
+    /// Not part of the file; empty until [`Scenario::load`] reads them.
+    #[serde(skip)]
+    pub recorded: RecordedTracks,
 }
 
 impl PartialEq for Scenario {
@@ -115,6 +127,8 @@ impl PartialEq for Scenario {
             seed,
             start_time,
             source: _,
+            recorded_tracks,
+            recorded,
         } = self;
         *name == other.name
             && *description == other.description
@@ -131,6 +145,8 @@ impl PartialEq for Scenario {
             && *rule10 == other.rule10
             && *seed == other.seed
             && *start_time == other.start_time
+            && *recorded_tracks == other.recorded_tracks
+            && *recorded == other.recorded
     }
 }
 
@@ -167,6 +183,8 @@ impl Scenario {
             seed: None,
             start_time: None,
             source: String::new(),
+            recorded_tracks: None,
+            recorded: RecordedTracks::default(),
         }
     }
 
@@ -454,6 +472,11 @@ pub enum Behaviour {
         /// The course change, degrees, positive to starboard (in `[-180, 180]`).
         turn_deg: f64,
     },
+    /// Follow the target's track in the scenario's `recorded_tracks` file
+    /// (the row's `vessel` is the target's name), interpolated between its
+    /// recorded states and dead-reckoned beyond them. Ownship's planner sees
+    /// only the last state recorded by then, dead-reckoned (decision 40).
+    Recorded,
 }
 
 /// How far a [`Behaviour::Colregs`] target turns to starboard when it gives
@@ -478,9 +501,10 @@ impl Behaviour {
     /// The field's name and what is wrong with it.
     pub fn check(&self) -> Result<(), (&'static str, String)> {
         let fields: Vec<(&'static str, f64, f64, f64)> = match *self {
-            Behaviour::ConstantToGoal | Behaviour::ConstantVelocity | Behaviour::Colregs => {
-                Vec::new()
-            }
+            Behaviour::ConstantToGoal
+            | Behaviour::ConstantVelocity
+            | Behaviour::Colregs
+            | Behaviour::Recorded => Vec::new(),
             Behaviour::Noisy {
                 course_sigma_deg,
                 speed_sigma_kn,
@@ -514,10 +538,11 @@ impl Behaviour {
     }
 
     /// Whether the target announces (and ownship predicts) a goal it steers
-    /// for: every behaviour but [`ConstantVelocity`](Self::ConstantVelocity).
+    /// for: every behaviour but [`ConstantVelocity`](Self::ConstantVelocity)
+    /// and [`Recorded`](Self::Recorded).
     #[must_use]
     pub fn announces_goal(&self) -> bool {
-        !matches!(self, Behaviour::ConstantVelocity)
+        !matches!(self, Behaviour::ConstantVelocity | Behaviour::Recorded)
     }
 }
 

@@ -2,7 +2,7 @@
 
 use crate::error::ScenarioError;
 use crate::planner_settings::describe_config_error;
-use crate::scenario::{Lane, Scenario, VesselSpec};
+use crate::scenario::{Behaviour, Lane, Scenario, VesselSpec};
 use vorrt_colregs::rules;
 use vorrt_planner::error::Readable;
 use vorrt_planner::{PlannerConfig, Turning};
@@ -138,7 +138,80 @@ impl Scenario {
             check_lane(index, lane).map_err(|(f, p)| invalid(f, p))?;
         }
         crate::chart::check_off_land(self).map_err(|(f, p)| invalid(f, p))?;
+        self.check_recorded_field()
+            .map_err(|(f, p)| invalid(f, p))?;
         Ok(())
+    }
+
+    /// A `Recorded` target needs a tracks file, and a tracks file needs a
+    /// name (decision 40).
+    fn check_recorded_field(&self) -> Result<(), (String, String)> {
+        if self
+            .recorded_tracks
+            .as_deref()
+            .is_some_and(|path| path.trim().is_empty())
+        {
+            return Err((
+                "recorded_tracks".into(),
+                "is empty: expected the path of a tracks CSV, relative to the scenario file".into(),
+            ));
+        }
+        if self.recorded_tracks.is_none()
+            && let Some((index, target)) = self
+                .targets
+                .iter()
+                .enumerate()
+                .find(|(_, target)| target.behaviour == Behaviour::Recorded)
+        {
+            return Err((
+                format!("targets[{index}] {:?}.behaviour", target.name),
+                "is Recorded, but the scenario names no recorded_tracks file for it to follow"
+                    .into(),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Checks that every [`Behaviour::Recorded`] target has a track in
+    /// [`Scenario::recorded`] ([`Scenario::load`] calls it once it has read
+    /// them; [`ClosedLoop`](crate::ClosedLoop) refuses a run without one).
+    ///
+    /// # Errors
+    /// [`ScenarioError::Invalid`] naming the target's `behaviour` field and
+    /// the tracks file.
+    pub fn check_recorded(&self) -> Result<(), ScenarioError> {
+        for (index, target) in self.targets.iter().enumerate() {
+            if target.behaviour == Behaviour::Recorded
+                && self
+                    .recorded
+                    .track(&target.name)
+                    .is_none_or(<[_]>::is_empty)
+            {
+                let file = if self.recorded.file.is_empty() {
+                    "(no recorded tracks loaded: Scenario::load reads them)".to_owned()
+                } else {
+                    self.recorded.file.clone()
+                };
+                return Err(ScenarioError::Invalid {
+                    file: self.source.clone(),
+                    field: format!("targets[{index}] {:?}.behaviour", target.name),
+                    problem: format!(
+                        "is Recorded, but {file} has no rows with vessel {:?}",
+                        target.name
+                    ),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The length of the vessel named `name` (ownship or a target), metres.
+    #[must_use]
+    pub fn vessel_length_m(&self, name: &str) -> Option<f64> {
+        std::iter::once(&self.ownship)
+            .chain(&self.targets)
+            .find(|vessel| vessel.name == name)
+            .map(|vessel| vessel.length_m)
     }
 
     /// The planner configuration: [`PlannerConfig::default()`] with the

@@ -244,6 +244,8 @@ impl Gen {
             seed: Some(self.0.next_u64()),
             start_time: None,
             source: "generated.ron".into(),
+            recorded_tracks: None,
+            recorded: vorrt_scenarios::RecordedTracks::default(),
         }
     }
 }

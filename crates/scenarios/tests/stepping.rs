@@ -283,3 +283,35 @@ fn ownship_plans_from_the_recordings_present_never_its_future() {
     assert_eq!(held.targets[0][at_turn], turned.targets[0][at_turn]);
     assert_ne!(held.targets[0][at_turn + 1], turned.targets[0][at_turn + 1]);
 }
+
+#[test]
+fn the_first_plan_knows_only_the_reports_made_before_it() {
+    let scenario = fixture("paper/crossing.ron");
+    let start = scenario.targets[0].state();
+    // Reported 30 s before the start on its course; its next report, 30 s
+    // into the run, says either that it held on or that it turned 60° to
+    // port. Interpolating between the two reports would show the turn half
+    // made at the start; AIS shows only the report before it.
+    let report = |course_change_deg: f64| {
+        let before = TimedState {
+            time_s: -30.0,
+            vessel: start.advanced(-30.0),
+        };
+        let after = TimedState {
+            time_s: 30.0,
+            vessel: VesselState {
+                course_rad: start.course_rad - course_change_deg.to_radians(),
+                ..start.advanced(30.0)
+            },
+        };
+        vec![before, after]
+    };
+    let first_plan = |states| {
+        let mut run = crossing_with(&scenario, states);
+        run.step();
+        without_clock(run.finish()).plans.remove(0)
+    };
+    let (held, turned) = (first_plan(report(0.0)), first_plan(report(60.0)));
+    assert!(held.succeeded);
+    assert_eq!(held, turned);
+}

@@ -564,6 +564,8 @@ fn synthesized_scenario(
         seed: None,
         start_time,
         source: format!("{file} (scenario synthesized by vorrt judge)"),
+        recorded_tracks: None,
+        recorded: vorrt_scenarios::RecordedTracks::default(),
     })
 }
 

@@ -310,6 +310,8 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated open-sea seed {seed} index {index}>"),
+        recorded_tracks: None,
+        recorded: crate::RecordedTracks::default(),
     };
     scenario.validate()?;
     Ok(scenario)

@@ -272,6 +272,8 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
         seed: Some(run_seed(seed, index)),
         start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
+        recorded_tracks: None,
+        recorded: crate::RecordedTracks::default(),
     };
     scenario.validate()?;
     Ok(scenario)

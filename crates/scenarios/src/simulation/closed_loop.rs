@@ -7,10 +7,11 @@ use super::planning::{
     ActivePlan, PlanCall, RetryTimer, follow, plan_now, remaining_legs, replan_trigger,
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
+use super::recorded::RecordedMotion;
 use super::target::{BehaviourTarget, TargetMotion};
 use crate::chart::Chart;
 use crate::error::ScenarioError;
-use crate::scenario::Scenario;
+use crate::scenario::{Behaviour, Scenario};
 use crate::scheme::scenario_constraint;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -204,12 +205,15 @@ impl ClosedLoop {
     /// caller.
     ///
     /// # Errors
-    /// [`ScenarioError::Invalid`] (field `planner`) when `config` is invalid.
+    /// [`ScenarioError::Invalid`]: field `planner` when `config` is
+    /// invalid, a target's `behaviour` when it is `Recorded` and has no
+    /// track in [`Scenario::recorded`].
     pub fn with_config(
         scenario: &Scenario,
         config: &PlannerConfig,
         seed: u64,
     ) -> Result<Self, ScenarioError> {
+        scenario.check_recorded()?;
         Self::with_motions(
             scenario,
             config,
@@ -219,7 +223,9 @@ impl ClosedLoop {
     }
 
     /// The scenario's targets as a run seeded with `seed` moves them, each
-    /// by its [`Behaviour`](crate::Behaviour), in the scenario's order: the
+    /// by its [`Behaviour`](crate::Behaviour), in the scenario's order (a
+    /// `Recorded` one by a [`RecordedMotion`] on its track in
+    /// [`Scenario::recorded`]; without one, on its course and speed): the
     /// motions [`with_config`](Self::with_config) uses, to replace some
     /// (with a [`RecordedMotion`](super::RecordedMotion), say) before
     /// [`with_motions`](Self::with_motions).
@@ -230,7 +236,14 @@ impl ClosedLoop {
             .iter()
             .enumerate()
             .map(|(index, spec)| {
-                Box::new(BehaviourTarget::new(spec, index, seed)) as Box<dyn TargetMotion>
+                let recorded = (spec.behaviour == Behaviour::Recorded)
+                    .then(|| scenario.recorded.track(&spec.name))
+                    .flatten()
+                    .and_then(|states| RecordedMotion::new(states.to_vec()).ok());
+                match recorded {
+                    Some(motion) => Box::new(motion) as Box<dyn TargetMotion>,
+                    None => Box::new(BehaviourTarget::new(spec, index, seed)),
+                }
             })
             .collect()
     }

@@ -49,9 +49,10 @@ pub enum RecordedMotionError {
 /// interpolated linearly in time, its course along the smaller turn; before
 /// the first state and after the last it is dead-reckoned from that state
 /// (its course and speed held). Ownship's planner is given only what the
-/// target shows at present: it is predicted holding its present course and
-/// speed ([`TargetMotion::announced`]), never from the rest of the
-/// recording.
+/// target has reported by now, as AIS shows it: its last recorded state at
+/// or before the present, dead-reckoned to the present on that state's
+/// course and speed ([`TargetMotion::announced`], decision 40), never the
+/// interpolation towards the next report nor anything later.
 ///
 /// ```
 /// use vorrt_scenarios::{RecordedMotion, TimedState};
@@ -71,6 +72,8 @@ pub struct RecordedMotion {
     states: Vec<TimedState>,
     /// The target now.
     present: VesselState,
+    /// The present time on the loop's clock, seconds.
+    time_s: f64,
 }
 
 impl RecordedMotion {
@@ -100,6 +103,7 @@ impl RecordedMotion {
         let mut track = Self {
             present: states[0].vessel,
             states,
+            time_s: 0.0,
         };
         track.present = track.state_at(0.0);
         Ok(track)
@@ -109,6 +113,17 @@ impl RecordedMotion {
     #[must_use]
     pub fn states(&self) -> &[TimedState] {
         &self.states
+    }
+
+    /// What ownship knows of the target at `time_s`: its last recorded state
+    /// at or before `time_s` (the last AIS report received), dead-reckoned
+    /// to `time_s` on that report's course and speed; before the first
+    /// report, the first dead-reckoned back (a target seen from the start).
+    #[must_use]
+    pub fn reported_at(&self, time_s: f64) -> VesselState {
+        let after = self.states.partition_point(|state| state.time_s <= time_s);
+        let report = self.states[after.saturating_sub(1)];
+        report.vessel.advanced(time_s - report.time_s)
     }
 
     /// Where the recording puts the target at `time_s`.
@@ -162,18 +177,19 @@ impl TargetMotion for RecordedMotion {
         _rules: &RuleParameters,
     ) {
         self.present = self.state_at(next_time_s);
+        self.time_s = next_time_s;
     }
 
-    /// Holding its present course and speed, as AIS and radar show them:
-    /// a recording announces no destination, and its future is not known
-    /// on board.
+    /// Holding the course and speed of its last report, dead-reckoned from
+    /// it ([`RecordedMotion::reported_at`]): a recording announces no
+    /// destination, and its future is not known on board (decision 40).
     fn announced(
         &self,
         _own: &VesselState,
         _encounter: Option<Encounter>,
         _rules: &RuleParameters,
     ) -> TargetState {
-        TargetState::constant_velocity(self.present)
+        TargetState::constant_velocity(self.reported_at(self.time_s))
     }
 }
 
@@ -266,12 +282,34 @@ mod tests {
             );
             assert_eq!(
                 b.announced(&own, None, &rules),
-                TargetState::constant_velocity(b.state_at(time_s))
+                TargetState::constant_velocity(b.reported_at(time_s))
             );
             a.advance(time_s, next_s, &own, &rules);
             b.advance(time_s, next_s, &own, &rules);
         }
         // At 100 s the one that will turn is still announced heading north.
         assert_eq!(b.announced(&own, None, &rules).vessel.course_rad, 0.0);
+        // Half way to the report of the turn it has truly swung to 315°,
+        // yet is announced on its last report: north, dead-reckoned.
+        for _ in 20..25 {
+            let time_s = b.time_s;
+            b.advance(time_s, time_s + 5.0, &own, &rules);
+        }
+        assert!((b.vessel().course_rad.to_degrees() - 315.0).abs() < 1e-9);
+        let announced = b.announced(&own, None, &rules).vessel;
+        assert_eq!(announced.course_rad, 0.0);
+        assert!((announced.position_m - DVec2::new(0.0, 625.0)).length() < 1e-9);
+    }
+
+    #[test]
+    fn the_report_is_the_last_one_dead_reckoned() {
+        let track = RecordedMotion::new(vec![
+            at(0.0, 0.0, 0.0, 90.0, 2.0),
+            at(10.0, 20.0, 0.0, 0.0, 4.0),
+        ])
+        .expect("valid");
+        assert!((track.reported_at(5.0).position_m - DVec2::new(10.0, 0.0)).length() < 1e-9);
+        assert!((track.reported_at(15.0).position_m - DVec2::new(20.0, 20.0)).length() < 1e-9);
+        assert!((track.reported_at(-5.0).position_m - DVec2::new(-10.0, 0.0)).length() < 1e-9);
     }
 }
