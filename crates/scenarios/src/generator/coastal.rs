@@ -261,7 +261,7 @@ fn coast(rng: &mut ChaCha8Rng, spec: &CoastalSpec, side: f64, goal_nm: f64) -> A
     shore.push((near, north));
     shore.push((far, north));
     shore.push((far, south));
-    let ring = shore
+    let outer_nm = shore
         .into_iter()
         .map(|(east, north)| (round_to(side * east, 4), round_to(north, 4)))
         .collect();
@@ -271,7 +271,7 @@ fn coast(rng: &mut ChaCha8Rng, spec: &CoastalSpec, side: f64, goal_nm: f64) -> A
         } else {
             "west coast"
         },
-        ring,
+        outer_nm,
     )
 }
 
