@@ -112,7 +112,7 @@ def generate(
     shard: Optional[str] = None,
 ) -> List[Scenario]:
     """The scenarios ``vorrt batch --generate KIND`` runs (``kind``:
-    ``open-sea``, with ``targets``; or ``tss``, with ``density_per_nm``),
+    ``open-sea``, with ``targets``; ``coastal``, with ``targets`` (default 1); or ``tss``, with ``density_per_nm``),
     each carrying the seed the batch simulates it with, so ``simulate``
     repeats its row. ``behaviour``: ``constant``, ``colregs``, ``noisy``,
     ``sudden-turn``; ``shard``: ``"i/n"``. Raises ScenarioError."""

@@ -198,6 +198,9 @@ pub(crate) enum Kind {
     /// Open-sea encounters: targets on near-collision courses (see
     /// docs/evaluation.md).
     OpenSea,
+    /// Open-sea encounters among islands and a coast near the route
+    /// (headlands, bays, lagoons; see docs/evaluation.md).
+    Coastal,
     /// Crossings of a traffic separation scheme.
     Tss,
 }
@@ -229,7 +232,8 @@ pub(crate) enum DirectionName {
 /// The generator options shared by `batch --generate` and `generate`.
 #[derive(Debug, Clone, Args)]
 pub(crate) struct GeneratorArgs {
-    /// Open sea: number of targets per scenario (1-256).
+    /// Open sea and coastal: number of targets per scenario (1-256; coastal
+    /// default 1).
     #[arg(long, value_name = "N")]
     pub(crate) targets: Option<usize>,
     /// TSS: traffic density, targets per nautical mile of lane [default: 1].

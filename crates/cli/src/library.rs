@@ -102,7 +102,8 @@ pub fn judge_csv(
 /// with their defaults.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GenerateOptions {
-    /// Open sea: targets per scenario (`--targets`, required there).
+    /// Open sea: targets per scenario (`--targets`, required there);
+    /// coastal: the same, default 1.
     pub targets: Option<usize>,
     /// TSS: targets per nautical mile of lane (`--density`).
     pub density_per_nm: Option<f64>,
@@ -136,18 +137,19 @@ impl Default for GenerateOptions {
 }
 
 /// The scenarios `vorrt batch --generate KIND` runs with these options,
-/// each with the seed the batch simulates it with (`kind`: `open-sea` or
-/// `tss`).
+/// each with the seed the batch simulates it with (`kind`: `open-sea`,
+/// `coastal` or `tss`).
 ///
 /// # Errors
 /// The command line's message for a bad kind, option or shard.
 pub fn generate(kind: &str, options: &GenerateOptions) -> Result<Vec<BatchItem>, String> {
     let kind = match kind {
         "open-sea" | "open_sea" => Kind::OpenSea,
+        "coastal" => Kind::Coastal,
         "tss" => Kind::Tss,
         other => {
             return Err(format!(
-                "kind is {other:?}, expected \"open-sea\" or \"tss\""
+                "kind is {other:?}, expected \"open-sea\", \"coastal\" or \"tss\""
             ));
         }
     };
@@ -258,6 +260,31 @@ mod tests {
             generate("open-sea", &no_targets)
                 .unwrap_err()
                 .contains("--targets")
+        );
+    }
+
+    #[test]
+    fn generate_coastal_gives_land_and_one_target_by_default() {
+        let options = GenerateOptions {
+            count: 2,
+            seed: 11,
+            ..GenerateOptions::default()
+        };
+        let items = generate("coastal", &options).expect("generates");
+        assert_eq!(items.len(), 2);
+        for item in &items {
+            assert_eq!(item.scenario.targets.len(), 1);
+            assert!(!item.scenario.land.is_empty(), "{}", item.scenario.name);
+        }
+        assert_eq!(items, generate("coastal", &options).expect("again"));
+        let density = GenerateOptions {
+            density_per_nm: Some(1.0),
+            ..options
+        };
+        assert!(
+            generate("coastal", &density)
+                .unwrap_err()
+                .contains("--density")
         );
     }
 

@@ -274,3 +274,55 @@ fn progress_headline_and_saved_runs_count_colregs() {
     assert!(rows.iter().all(|row| row.time_overhead_pct.is_finite()));
     assert_eq!(summary.time_overhead_pct.count, rows.len());
 }
+
+#[test]
+fn a_coastal_batch_writes_land_rows_and_generate_coastal_writes_files_with_land() {
+    let temp = tempfile::tempdir().unwrap();
+    let out = temp.path().join("coastal");
+    ok(&vorrt(&[
+        "batch",
+        "--generate",
+        "coastal",
+        "--count",
+        "3",
+        "--seed",
+        "11",
+        "--jobs",
+        "1",
+        "--out",
+        path_str(&out),
+    ]));
+    let summary = summary(&out);
+    assert_eq!(summary.count, 3);
+    assert_eq!(summary.groundings, 0);
+    assert_eq!(summary.land_clearance_violations, 0);
+    assert!(summary.min_land_distance_m.count == 3, "{summary:?}");
+    let files = temp.path().join("files");
+    ok(&vorrt(&[
+        "generate",
+        "coastal",
+        "--count",
+        "2",
+        "--seed",
+        "11",
+        "--out",
+        path_str(&files),
+    ]));
+    for entry in std::fs::read_dir(&files).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(text.contains("island"), "{}", path.display());
+        ok(&vorrt(&["check", path_str(&path)]));
+    }
+    let refused = vorrt(&[
+        "batch",
+        "--generate",
+        "coastal",
+        "--density",
+        "1",
+        "--out",
+        path_str(&out),
+    ]);
+    assert!(!refused.status.success());
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("--density"));
+}

@@ -1,6 +1,7 @@
 //! Land in the closed loop (decision 29): the bundled coastal fixtures and
-//! generated coastal scenarios (seeded random islands and a coast near the
-//! route, random crossing targets) are sailed without coming within
+//! generated coastal scenarios (`vorrt_scenarios::generator::coastal`,
+//! decision 41: islands and a coast near the route, targets in every
+//! encounter type) are sailed without coming within
 //! `land_clearance_m` of land, checked independently of the constraint
 //! code: the sailed track is sampled every few metres and each sample
 //! measured against the polygons by `geo`'s own distance.
@@ -9,9 +10,8 @@
 
 use geo::{Distance, Euclidean, LineString, Point, Polygon};
 use proptest::prelude::*;
-use rand_chacha::ChaCha8Rng;
-use rand_core::{RngCore, SeedableRng};
-use vorrt_scenarios::{Area, Scenario, SimulationRecord, VesselSpec, evaluate, fixtures, simulate};
+use vorrt_scenarios::generator::{CoastalSpec, TargetBehaviour, coastal};
+use vorrt_scenarios::{Area, Scenario, SimulationRecord, evaluate, fixtures, simulate};
 
 const NM: f64 = 1852.0;
 
@@ -168,102 +168,54 @@ fn a_crossing_with_a_coast_to_starboard_keeps_off_it() {
     );
 }
 
-fn unit(rng: &mut ChaCha8Rng) -> f64 {
-    #[expect(clippy::cast_precision_loss, reason = "53 random bits are exact")]
-    let value = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-    value
-}
-
-/// A star-shaped island about `centre_nm` (simple by construction), radii in
-/// `[0.4, 1] x radius_nm`.
-fn island(rng: &mut ChaCha8Rng, name: &str, centre_nm: (f64, f64), radius_nm: f64) -> Area {
-    let vertices = 5 + usize::try_from(rng.next_u64() % 8).unwrap_or(0);
-    #[expect(clippy::cast_precision_loss, reason = "a dozen vertices")]
-    let outer_nm = (0..vertices)
-        .map(|index| {
-            let angle = std::f64::consts::TAU * (index as f64 + 0.4 * unit(rng)) / vertices as f64;
-            let radius = radius_nm * (0.4 + 0.6 * unit(rng));
-            (
-                centre_nm.0 + radius * angle.cos(),
-                centre_nm.1 + radius * angle.sin(),
-            )
-        })
-        .collect();
-    Area::from_nm(name, outer_nm)
-}
-
-/// A generated coastal scenario: ownship north along a 6 nm route, one or
-/// two islands within a mile of the route (maybe across it), maybe a coast
-/// to one side, and one crossing target on a collision course; `None` when
-/// the draw puts ownship's start or goal too near land (validation refuses
-/// it) or leaves no way through.
-fn coastal_scenario(seed: u64) -> Option<Scenario> {
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut land = Vec::new();
-    let islands = 1 + rng.next_u64() % 2;
-    for index in 0..islands {
-        let centre = (1.6 * unit(&mut rng) - 0.8, 3.0 * unit(&mut rng) - 1.5);
-        let radius_nm = 0.2 + 0.4 * unit(&mut rng);
-        land.push(island(
-            &mut rng,
-            &format!("island {index}"),
-            centre,
-            radius_nm,
-        ));
-    }
-    if rng.next_u64() % 2 == 0 {
-        // A straight coast 1.5-2 nm to one side, beyond the islands.
-        let side = if rng.next_u64() % 2 == 0 { 1.0 } else { -1.0 };
-        let near = side * (1.5 + 0.5 * unit(&mut rng));
-        let far = side * 5.0;
-        land.push(Area::from_nm(
-            "coast",
-            vec![(near, -5.0), (far, -5.0), (far, 5.0), (near, 5.0)],
-        ));
-    }
-    // A crossing target from either side, meeting ownship's straight route
-    // at the same moment.
-    let side = if rng.next_u64() % 2 == 0 { 1.0 } else { -1.0 };
-    let meet_y_nm = 2.0 * unit(&mut rng) - 1.0;
-    let time_h = (meet_y_nm + 3.0) / 12.0;
-    let speed_kn = 8.0 + 6.0 * unit(&mut rng);
-    let bearing = side * (60.0 + 60.0 * unit(&mut rng)).to_radians();
-    let start = (
-        bearing.sin() * speed_kn * time_h,
-        meet_y_nm + bearing.cos() * speed_kn * time_h,
-    );
-    let course_deg = (bearing.to_degrees() + 180.0).rem_euclid(360.0);
-    let goal = (start.0 - bearing.sin() * 8.0, start.1 - bearing.cos() * 8.0);
-    let mut scenario = Scenario::from_ron_str(
-        "(name: \"coastal\", ownship: Vessel(name: \"ownship\", start_nm: (0.0, -3.0), course_deg: 0.0, speed_kn: 12.0, length_m: 100.0, goal_nm: (0.0, 3.0)), planner: (nodes_per_phase: 600))",
-        "<generated>",
-    )
-    .ok()?;
-    scenario.name = format!("coastal-{seed}");
-    scenario.targets =
-        vec![VesselSpec::new("TS1", start, course_deg, speed_kn, 120.0).with_goal_nm(goal)];
-    scenario.land = land;
-    scenario.validate().ok()?;
-    Some(scenario)
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(), ..ProptestConfig::default() })]
 
     #[test]
     fn generated_coastal_runs_keep_off_land(seed in 0u64..1_000_000) {
-        // Draws that validation refuses (start or goal near land, a target
-        // on land) are drawn again; the others must be sailed clear of land.
-        let scenario = coastal_scenario(seed);
-        prop_assume!(scenario.is_some());
-        if let Some(scenario) = scenario {
-            sail_and_check(&scenario, seed).map_err(TestCaseError::fail)?;
-        }
+        // The library's generator (decision 41): every draw it gives must
+        // be sailed clear of land, without grounding or collision.
+        let scenario = coastal(&CoastalSpec::with_targets(1), seed, 0)
+            .map_err(|error| TestCaseError::fail(error.to_string()))?;
+        sail_and_check(&scenario, seed).map_err(TestCaseError::fail)?;
     }
 }
 
 #[test]
-fn the_generator_draws_valid_scenarios_often() {
-    let valid = (0..40).filter_map(coastal_scenario).count();
-    assert!(valid >= 10, "{valid} of 40");
+fn the_generator_is_deterministic_and_keeps_starts_and_goals_off_land() {
+    let spec = CoastalSpec::with_targets(2).with_behaviour(TargetBehaviour::Colregs);
+    for index in 0..12 {
+        let scenario = coastal(&spec, 21, index).expect("generated");
+        assert_eq!(scenario, coastal(&spec, 21, index).expect("again"));
+        // Round trip through the file format validates again.
+        let text = scenario.to_ron_string().expect("written");
+        Scenario::from_ron_str(&text, "<round trip>").expect("valid");
+        // Independently of the chart: ownship's start and goal are the
+        // planner's land clearance from every polygon, each target's start
+        // the judged clearance.
+        let polygons = polygons_m(&scenario.land);
+        let planner_m = scenario.land_clearance_m() + 0.5 * scenario.ownship.length_m;
+        let own = scenario.ownship_state().position_m;
+        for point in [own, scenario.ownship_goal_m()] {
+            for polygon in &polygons {
+                let distance_m = Euclidean.distance(&Point::new(point.x, point.y), polygon);
+                assert!(distance_m >= planner_m, "{}: {distance_m}", scenario.name);
+            }
+        }
+        for target in &scenario.targets {
+            let start = target.state().position_m;
+            for polygon in &polygons {
+                let distance_m = Euclidean.distance(&Point::new(start.x, start.y), polygon);
+                assert!(
+                    distance_m >= scenario.land_clearance_m(),
+                    "{}: {distance_m}",
+                    scenario.name
+                );
+            }
+        }
+    }
+    assert_ne!(
+        coastal(&spec, 21, 0).expect("generated").land,
+        coastal(&spec, 22, 0).expect("generated").land
+    );
 }

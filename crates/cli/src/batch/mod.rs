@@ -27,7 +27,7 @@ use vorrt_scenarios::batch::{
     self, BatchItem, BatchRow, BatchSummary, Shard, generate_items, load_items,
 };
 use vorrt_scenarios::generator::{
-    GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection, TssSpec,
+    CoastalSpec, GeneratorSpec, OpenSeaSpec, TargetBehaviour, TssDirection, TssSpec,
 };
 
 impl GeneratorArgs {
@@ -55,6 +55,16 @@ impl GeneratorArgs {
                 })?;
                 Ok(GeneratorSpec::OpenSea(
                     OpenSeaSpec::with_targets(targets).with_behaviour(behaviour),
+                ))
+            }
+            Kind::Coastal => {
+                if self.density.is_some() {
+                    return Err(CliError::BadInput(
+                        "--density is for --generate tss; coastal takes --targets".into(),
+                    ));
+                }
+                Ok(GeneratorSpec::Coastal(
+                    CoastalSpec::with_targets(self.targets.unwrap_or(1)).with_behaviour(behaviour),
                 ))
             }
             Kind::Tss => {
@@ -133,7 +143,7 @@ pub(crate) fn items_of(
         ),
         (None, None) => {
             return Err(CliError::BadInput(
-                "give --generate open-sea|tss or --dir FOLDER".into(),
+                "give --generate open-sea|coastal|tss or --dir FOLDER".into(),
             ));
         }
     };

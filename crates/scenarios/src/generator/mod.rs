@@ -1,6 +1,7 @@
 //! Seeded scenario generators for Monte Carlo campaigns: open-sea encounters
-//! with a chosen mix of encounter types, and crossings of a traffic
-//! separation scheme at a chosen traffic density.
+//! with a chosen mix of encounter types, the same among islands and a coast
+//! (coastal), and crossings of a traffic separation scheme at a chosen
+//! traffic density.
 //!
 //! Every draw comes from a `ChaCha8` stream of its own per scenario index
 //! (seed = the batch seed, stream = the index), so scenario `k` of a batch is
@@ -25,10 +26,12 @@
 //! | `random.rs` | [`scenario_stream`], [`run_seed`]: the seeded streams, uniform draws, rounding |
 //! | `behaviour.rs` | [`TargetBehaviour`]: how the generated targets move |
 //! | `open_sea.rs` | [`OpenSeaSpec`], [`EncounterMix`], [`open_sea`] |
+//! | `coastal.rs` | [`CoastalSpec`], [`coastal`]: open-sea encounters among islands and a coast |
 //! | `tss.rs` | [`TssSpec`], [`TssDirection`], [`tss`] |
 //! | `verification.rs` | [`encounter_at_risk`] and the check that a drawn target keeps the generator's promises |
 
 mod behaviour;
+mod coastal;
 mod open_sea;
 mod random;
 #[cfg(test)]
@@ -37,6 +40,7 @@ mod tss;
 mod verification;
 
 pub use behaviour::{DEFAULT_COURSE_SIGMA_DEG, DEFAULT_SPEED_SIGMA_KN, TargetBehaviour};
+pub use coastal::{CoastalSpec, coastal};
 pub use open_sea::{EncounterMix, OpenSeaSpec, open_sea};
 pub use random::{run_seed, scenario_stream};
 pub use tss::{TssDirection, TssSpec, tss};
@@ -77,17 +81,29 @@ pub enum GeneratorError {
         /// How many draws were tried.
         attempts: usize,
     },
+    /// No draw of land kept every start and goal clear of it.
+    #[error(
+        "scenario {index}: no draw of land kept ownship's start and goal and the targets' tracks clear of land in {attempts} draws"
+    )]
+    LandPlacement {
+        /// The scenario index.
+        index: u64,
+        /// How many draws of land were tried.
+        attempts: usize,
+    },
     /// The generated scenario failed validation (a bug in the generator).
     #[error("generated scenario is invalid: {0}")]
     Invalid(#[from] ScenarioError),
 }
 
-/// What to generate: an open-sea encounter or a TSS crossing.
+/// What to generate: an open-sea encounter, a coastal one or a TSS crossing.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum GeneratorSpec {
     /// [`open_sea`].
     OpenSea(OpenSeaSpec),
+    /// [`coastal`].
+    Coastal(CoastalSpec),
     /// [`tss`].
     Tss(TssSpec),
 }
@@ -96,10 +112,11 @@ impl GeneratorSpec {
     /// Scenario `index` of the batch seeded with `seed`.
     ///
     /// # Errors
-    /// As [`open_sea`] and [`tss`].
+    /// As [`open_sea`], [`coastal`] and [`tss`].
     pub fn generate(&self, seed: u64, index: u64) -> Result<Scenario, GeneratorError> {
         match self {
             Self::OpenSea(spec) => open_sea(spec, seed, index),
+            Self::Coastal(spec) => coastal(spec, seed, index),
             Self::Tss(spec) => tss(spec, seed, index),
         }
     }
