@@ -155,7 +155,8 @@
 //! use vorrt_colregs::observed::{judge, ObservedParameters, RecordedTrack, Recording};
 //! use vorrt_colregs::Encounter;
 //! use glam::DVec2;
-//! // Head-on at 6 m/s each, 9 km apart; ownship holds course: no action.
+//! // Head-on at 6 m/s each, 9 km apart, set to pass 150 m apart (50 m
+//! // between the hulls, under d_th); ownship holds course: no action.
 //! let times_s: Vec<f64> = (0..=150).map(|i| f64::from(i) * 10.0).collect();
 //! let track = |name: &str, start: DVec2, velocity: DVec2| RecordedTrack {
 //!     name: name.into(),
@@ -166,7 +167,7 @@
 //! };
 //! let recording = Recording {
 //!     ownship: track("ownship", DVec2::ZERO, DVec2::new(0.0, 6.0)),
-//!     targets: vec![track("TS1", DVec2::new(300.0, 9000.0), DVec2::new(0.0, -6.0))],
+//!     targets: vec![track("TS1", DVec2::new(150.0, 9000.0), DVec2::new(0.0, -6.0))],
 //!     times_s: times_s.clone(),
 //! };
 //! let judgement = judge(&recording, &ObservedParameters::default()).unwrap();
@@ -178,6 +179,8 @@
 //! ```
 
 mod judge;
+#[cfg(test)]
+mod mariner_tests;
 mod noise;
 #[cfg(test)]
 mod noise_tests;
