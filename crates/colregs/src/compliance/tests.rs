@@ -256,3 +256,23 @@ fn a_jittery_heading_line_is_no_change_of_side() {
         .expect("a real crossing");
     assert!((ahead_m - 1500.0).abs() < 30.0, "{ahead_m}");
 }
+
+#[test]
+fn stand_on_port_turn_is_judged_in_crossings_only() {
+    // A vessel on ownship's port quarter, 1 km off and closing; ownship,
+    // standing on, turns 40° to port at 300 s (within 2 nm). Rule 17(c)
+    // speaks of crossing situations only: the same track latched as being
+    // overtaken is not a 17(c) finding.
+    let rules = RuleParameters::default();
+    let target = VesselState::new(DVec2::new(-1000.0, -600.0), 0.4, 8.0, 50.0);
+    let samples = run(target, 300.0, -40.0, 600.0);
+    let judged = |encounter| {
+        let latch = EncounterLatch::new(encounter, &samples[0].own, 0.0);
+        assess_encounter(&samples, &latch, &rules, &ScoringParameters::default())
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::StandOnTurnedToPort { .. }))
+    };
+    assert!(judged(Encounter::CrossingStandOn));
+    assert!(!judged(Encounter::BeingOvertaken));
+}
