@@ -77,9 +77,7 @@ impl Findings {
             return;
         }
         match (measured.action_time_s, measured.action_range_m) {
-            // A pass predicted to keep d_th needs no action (decision 42):
-            // none is demanded, and one taken is not judged as the give-way
-            // action (its manner still is, in rules 13-15).
+            // A pass predicted to keep d_th owes no action (decision 42).
             _ if !measured.action_required => {}
             (Some(action_time_s), Some(range_m)) => {
                 let early_range_m = scoring.late_action_range_m;
