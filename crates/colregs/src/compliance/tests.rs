@@ -240,7 +240,7 @@ fn a_jittery_heading_line_is_no_change_of_side() {
     // 10 m east of the mean line, the target's course jittering ±1°: her
     // heading line swings 26 m either way at 1 500 m and crosses ownship
     // back and forth, but ownship never leaves the line's uncertainty.
-    let jitter = |i: usize| if i % 2 == 0 { 1.0 } else { -1.0 };
+    let jitter = |i: usize| if i.is_multiple_of(2) { 1.0 } else { -1.0 };
     let samples = ahead_of_bow(|_| 10.0, jitter);
     let window_of = window(&samples);
     assert_eq!(

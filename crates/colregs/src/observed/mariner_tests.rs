@@ -16,7 +16,7 @@ fn straight(
     target_mps: DVec2,
     duration_s: f64,
 ) -> Recording {
-    let times_s: Vec<f64> = (0..)
+    let times_s: Vec<f64> = (0..=10_000)
         .map(|i| f64::from(i) * 10.0)
         .take_while(|t| *t <= duration_s)
         .collect();
