@@ -49,6 +49,8 @@ TURN_FINDINGS = {
     "stand_on_turned_to_port",
     "port_turn_toward_vessel",
 }
+# Rule 16's action findings and rule 15's crossing ahead (decision 42).
+ACTION_FINDINGS = {"no_action", "late_action", "action_not_apparent", "alteration_not_held"}
 CLASSES = {"crossing_give_way", "crossing_stand_on", "head_on", "overtaking", "being_overtaken"}
 
 
@@ -264,6 +266,9 @@ def main():
         target = judgement["targets"][0]
         counts["real_encounters"] += target["encounter"] != "none"
         counts["real_turn_finding"] += bool(TURN_FINDINGS & set(findings(judgement)))
+        counts["real_action_finding"] += bool(ACTION_FINDINGS & set(findings(judgement)))
+        counts["real_no_action"] += "no_action" in findings(judgement)
+        counts["real_crossed_ahead"] += "crossed_ahead" in findings(judgement)
         counts["real_undecided"] += len(judgement.get("undecided", []))
         details.append(
             {

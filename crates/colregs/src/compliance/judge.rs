@@ -77,6 +77,8 @@ impl Findings {
             return;
         }
         match (measured.action_time_s, measured.action_range_m) {
+            // A pass predicted to keep d_th owes no action (decision 42).
+            _ if !measured.action_required => {}
             (Some(action_time_s), Some(range_m)) => {
                 let early_range_m = scoring.late_action_range_m;
                 // Within the reaction time of the latch an action is never
@@ -140,8 +142,9 @@ impl Findings {
                     penalties.push(weights.not_held);
                 }
             }
-            // Risk of collision was latched (rule 7) and the encounter was in
-            // force: a give-way vessel acts, however wide the predicted pass.
+            // Risk of collision was latched (rule 7), the encounter was in
+            // force and the predicted pass would break d_th: a give-way
+            // vessel acts.
             _ if measured.latch_range_m.is_some() => {
                 self.violations.push(ComplianceViolation::NoAction);
                 penalties.push(weights.no_action);
@@ -193,6 +196,8 @@ impl Findings {
                 self.rule_14 = Some(rule_score(&penalties));
             }
             Encounter::CrossingGiveWay => {
+                // Within crossed_ahead_range_m and for a real change of side
+                // only (measure.rs; decision 42).
                 if let Some(distance_ahead_m) = measured.crossed_ahead_distance_m {
                     self.violations
                         .push(ComplianceViolation::CrossedAhead { distance_ahead_m });

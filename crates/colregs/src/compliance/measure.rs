@@ -131,8 +131,12 @@ pub(super) struct Measurements {
     /// approach; `None` if held.
     pub(super) eased_back: Option<EasedBack>,
     /// The smallest distance ahead of the target's bow at which ownship
-    /// crossed its heading line while in force.
+    /// crossed its heading line while in force, within
+    /// `crossed_ahead_range_m` and for a real change of side.
     pub(super) crossed_ahead_distance_m: Option<f64>,
+    /// Whether the pass predicted at the first in-force sample would break
+    /// `d_th`, so that a give-way action was required (decision 42).
+    pub(super) action_required: bool,
 }
 
 /// How a readily apparent alteration was eased back before the closest
@@ -241,7 +245,8 @@ impl Measurements {
                 .fold(0.0, f64::max),
             small_alterations,
             eased_back: eased_back(before_cpa, latch, parameters, scoring),
-            crossed_ahead_distance_m: crossing_ahead_distance(window.segments(samples)),
+            crossed_ahead_distance_m: crossing_ahead_distance(samples, window, parameters, scoring),
+            action_required: action_required(latch_sample, scoring),
         }
     }
 }
@@ -366,10 +371,41 @@ fn side_at(samples: &[EncounterSample], index: usize, time_s: f64) -> Option<Pas
 }
 
 /// The smallest distance ahead of the target's bow at which ownship's
-/// relative track crosses the target's heading line, over `segments`.
-fn crossing_ahead_distance(segments: &[EncounterSample]) -> Option<f64> {
+/// relative track crosses the target's heading line while in force (over
+/// the window's [`segments`](InForce::segments)), counting only a crossing ahead (rule 15) within `crossed_ahead_range_m`
+/// of her bow and with a real change of side (decision 42).
+///
+/// A real change of side: ownship lay clear of the heading line on the side
+/// it came from at some sample at or before the crossing, and clear of it on
+/// the other side at some sample after it (the window may end as the
+/// vessels pass: the whole recording is read). Clear is farther than the
+/// target's half length plus what a heading line uncertain by the
+/// detectable change ([`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad))
+/// sweeps at that distance ahead: a line drawn from a jittery course
+/// crosses a vessel passing well clear ahead without her changing side.
+pub(super) fn crossing_ahead_distance(
+    samples: &[EncounterSample],
+    window: &InForce,
+    parameters: &RuleParameters,
+    scoring: &ScoringParameters,
+) -> Option<f64> {
+    // Each sample's signed offset from the target's heading line (none for
+    // a target at rest: it has no bow to cross).
+    let offsets: Vec<Option<f64>> = samples
+        .iter()
+        .map(|s| {
+            let heading = s.target.velocity_mps().normalize_or_zero();
+            let relative = s.own.position_m - s.target.position_m;
+            (heading != DVec2::ZERO).then(|| cross(heading, relative))
+        })
+        .collect();
+    let clear_of_line = |ahead_m: f64, length_m: f64| {
+        0.5 * length_m + ahead_m.max(0.0) * parameters.turn_tolerance_rad.tan()
+    };
     let mut nearest: Option<f64> = None;
-    for pair in segments.windows(2) {
+    let first = window.start.min(samples.len());
+    for (step, pair) in window.segments(samples).windows(2).enumerate() {
+        let index = first + step;
         let (a, b) = (&pair[0], &pair[1]);
         let heading = a.target.velocity_mps().normalize_or_zero();
         if heading == DVec2::ZERO {
@@ -385,11 +421,49 @@ fn crossing_ahead_distance(segments: &[EncounterSample]) -> Option<f64> {
         }
         let fraction = offset_a / (offset_a - offset_b);
         let ahead_m = heading.dot(relative_a.lerp(relative_b, fraction));
-        if ahead_m > 0.0 {
+        if ahead_m <= 0.0 || ahead_m > scoring.crossed_ahead_range_m {
+            continue;
+        }
+        let margin_m = clear_of_line(ahead_m, a.target.length_m);
+        let from = offset_a.signum();
+        let was_clear = offsets[..=index]
+            .iter()
+            .flatten()
+            .any(|offset| from * offset > margin_m);
+        let became_clear = offsets[index + 1..]
+            .iter()
+            .flatten()
+            .any(|offset| -from * offset > margin_m);
+        if was_clear && became_clear {
             nearest = Some(nearest.map_or(ahead_m, |n: f64| n.min(ahead_m)));
         }
     }
     nearest
+}
+
+/// Whether a give-way action was required (rule 16, "to keep well clear"):
+/// the pass predicted at the first in-force sample, both vessels holding
+/// their velocities, would not keep the clearance `d_th` between the hulls
+/// ([`keeps_clearance`]). A pass predicted to keep it is already clear, and
+/// no alteration is demanded of it (decision 42; issue 23: a set-up
+/// port-to-port pass at 0.8 nm, an overtaking 0.2 nm off). With no in-force
+/// sample, nothing was required.
+fn action_required(latch_sample: Option<&EncounterSample>, scoring: &ScoringParameters) -> bool {
+    latch_sample.is_some_and(|s| {
+        let cpa_m = closest_point_of_approach(
+            s.own.position_m,
+            s.own.velocity_mps(),
+            s.target.position_m,
+            s.target.velocity_mps(),
+        )
+        .distance_m;
+        !keeps_clearance(
+            cpa_m,
+            s.own.length_m,
+            s.target.length_m,
+            scoring.clearance_m,
+        )
+    })
 }
 
 /// The signed value of largest magnitude, or 0 for none.

@@ -58,10 +58,12 @@
 //! - Give way (head-on, crossing give-way, overtaking; rule 16, with rule 8(b)
 //!   for "readily apparent"):
 //!   - [`NoAction`](ComplianceViolation::NoAction): no action while in
-//!     force. Risk of collision was latched, so a give-way vessel acts
-//!     however wide the predicted pass (the published evaluators judge it
-//!     so); the manner of passing (port turn, starboard-to-starboard,
-//!     crossing ahead) is judged as well.
+//!     force, where an action was required: the pass predicted at the
+//!     first in-force sample (both holding their velocities) would not keep
+//!     `clearance_m` between the hulls. A pass predicted to keep it is
+//!     already clear and none of the rule 16 findings below is judged
+//!     (decision 42); the manner of passing (port turn,
+//!     starboard-to-starboard, crossing ahead) is judged as well.
 //!   - None of the rule 16 findings below where the closest approach comes
 //!     within `reaction_time_s` of the latch: no action could be taken, let
 //!     alone seen, in that time.
@@ -89,7 +91,10 @@
 //!   - [`StarboardToStarboard`](ComplianceViolation::StarboardToStarboard)
 //!     (head-on, rule 14(a)): the target passed on ownship's starboard side.
 //!   - [`CrossedAhead`](ComplianceViolation::CrossedAhead): in crossing
-//!     give-way (rule 15) any crossing of the target's bow; when overtaking
+//!     give-way (rule 15) a crossing of the target's heading line within
+//!     `crossed_ahead_range_m` (1 nm) of her bow, with a real change of
+//!     side (clear of the line's uncertainty before and after: half her
+//!     length plus the detectable change's swing; decision 42); when overtaking
 //!     (rule 13) a crossing of the overtaken vessel's bow closer than
 //!     `clearance_m` ahead of it (cutting in).
 //! - Stand on (crossing stand-on, being overtaken; rule 17):

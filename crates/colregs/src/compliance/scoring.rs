@@ -104,6 +104,14 @@ pub struct ScoringParameters {
     /// readily apparent on its own (notes: "a speed reduction of half").
     /// Default 0.5.
     pub apparent_speed_reduction_fraction: f64,
+    /// Rule 15 ("avoid crossing ahead"): ownship crossing the other vessel's
+    /// heading line farther ahead of her bow than this is not crossing ahead
+    /// so as to involve risk of collision, metres. Default 1 nm (1852 m),
+    /// the predicted miss under which a pass is a risk of collision
+    /// ([`risk_cpa_m`](crate::RuleParameters::risk_cpa_m)): a crossing
+    /// farther ahead would be an already-clear pass (issue 23, where one was
+    /// found at 5 079 m; decision 42).
+    pub crossed_ahead_range_m: f64,
     /// Weights of the rule penalties.
     pub penalties: PenaltyWeights,
 }
@@ -120,6 +128,7 @@ impl Default for ScoringParameters {
             action_detection_rad: 5f64.to_radians(),
             action_speed_drop_fraction: 0.2,
             apparent_speed_reduction_fraction: 0.5,
+            crossed_ahead_range_m: 1852.0,
             penalties: PenaltyWeights::default(),
         }
     }
@@ -164,6 +173,7 @@ impl ScoringParameters {
         let non_negative = [
             ("late_action_range_m", self.late_action_range_m),
             ("reaction_time_s", self.reaction_time_s),
+            ("crossed_ahead_range_m", self.crossed_ahead_range_m),
         ];
         for (field, value) in non_negative {
             if !(value.is_finite() && value >= 0.0) {

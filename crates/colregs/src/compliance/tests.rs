@@ -126,18 +126,18 @@ fn head_on_without_action_is_no_action_and_collision() {
 }
 
 #[test]
-fn no_action_is_a_finding_even_when_the_pass_was_clear_of_d_th() {
-    // Predicted CPA 800 m to port: risk latched (under 1 nm), clear of d_th;
-    // a give-way vessel at risk of collision still acts (rule 16, as the
-    // published evaluators judge it).
+fn no_action_is_not_demanded_of_a_pass_clear_of_d_th() {
+    // Predicted CPA 800 m to port: risk latched (under 1 nm), but clear of
+    // d_th between the hulls: no action was required (decision 42).
     let rules = RuleParameters::default();
     let target = VesselState::new(DVec2::new(-800.0, 9000.0), PI, 6.0, 50.0);
     let samples = run(target, f64::INFINITY, 0.0, 1500.0);
     let latch = first_latch(&samples, &rules).expect("risk");
     let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
-    assert_eq!(a.violations, vec![ComplianceViolation::NoAction]);
+    assert_eq!(a.violations, vec![]);
     assert_eq!(a.action_time_s, None);
     assert!((a.latch_cpa_m.expect("latched") - 800.0).abs() < 1e-6);
+    assert!(a.compliant);
     // The mirror image also passes starboard to starboard, which rule 14(a)
     // names whatever the distance.
     let target = VesselState::new(DVec2::new(800.0, 9000.0), PI, 6.0, 50.0);
@@ -146,13 +146,21 @@ fn no_action_is_a_finding_even_when_the_pass_was_clear_of_d_th() {
     let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
     assert_eq!(
         a.violations,
-        vec![
-            ComplianceViolation::NoAction,
-            ComplianceViolation::StarboardToStarboard
-        ]
+        vec![ComplianceViolation::StarboardToStarboard]
     );
-    assert_eq!(a.scores.rule_16, Some(0.0));
+    assert_eq!(a.scores.rule_16, Some(1.0));
     assert_eq!(a.scores.rule_14, Some(0.5));
+    // Under d_th between the hulls (150 m, with 50 m hulls), action was
+    // required and none was taken.
+    let target = VesselState::new(DVec2::new(-150.0, 9000.0), PI, 6.0, 50.0);
+    let samples = run(target, f64::INFINITY, 0.0, 1500.0);
+    let latch = first_latch(&samples, &rules).expect("risk");
+    let a = assess_encounter(&samples, &latch, &rules, &ScoringParameters::default());
+    assert!(
+        a.violations.contains(&ComplianceViolation::NoAction),
+        "{:?}",
+        a.violations
+    );
 }
 
 #[test]
@@ -198,4 +206,73 @@ fn displays_name_the_rule() {
         }
         .is_rule_violation()
     );
+}
+
+/// Ownship held still 1 500 m ahead of a target heading north at 6 m/s,
+/// at `offset_m(i)` east of her heading line at sample `i`, her course
+/// jittering by `jitter_deg(i)`.
+fn ahead_of_bow(
+    offset_m: impl Fn(usize) -> f64,
+    jitter_deg: impl Fn(usize) -> f64,
+) -> Vec<EncounterSample> {
+    (0..40)
+        .map(|i| {
+            let target = VesselState::new(DVec2::ZERO, jitter_deg(i).to_radians(), 6.0, 100.0);
+            let own = VesselState::new(DVec2::new(offset_m(i), 1500.0), 0.0, 0.0, 100.0);
+            EncounterSample::new(
+                f64::from(u32::try_from(i).expect("small")) * 5.0,
+                own,
+                target,
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn a_jittery_heading_line_is_no_change_of_side() {
+    let rules = RuleParameters::default();
+    let scoring = ScoringParameters::default();
+    let window = |samples: &[EncounterSample]| measure::InForce {
+        start: 0,
+        end: samples.len(),
+        passed_index: None,
+    };
+    // 10 m east of the mean line, the target's course jittering ±1°: her
+    // heading line swings 26 m either way at 1 500 m and crosses ownship
+    // back and forth, but ownship never leaves the line's uncertainty.
+    let jitter = |i: usize| if i.is_multiple_of(2) { 1.0 } else { -1.0 };
+    let samples = ahead_of_bow(|_| 10.0, jitter);
+    let window_of = window(&samples);
+    assert_eq!(
+        measure::crossing_ahead_distance(&samples, &window_of, &rules, &scoring),
+        None
+    );
+    // Ownship moving from 300 m west of the line to 300 m east of it, with
+    // the same jitter: a real change of side, 1 500 m ahead of her bow.
+    let across = |i: usize| -300.0 + 600.0 * f64::from(u32::try_from(i).expect("small")) / 39.0;
+    let samples = ahead_of_bow(across, jitter);
+    let window_of = window(&samples);
+    let ahead_m = measure::crossing_ahead_distance(&samples, &window_of, &rules, &scoring)
+        .expect("a real crossing");
+    assert!((ahead_m - 1500.0).abs() < 30.0, "{ahead_m}");
+}
+
+#[test]
+fn stand_on_port_turn_is_judged_in_crossings_only() {
+    // A vessel on ownship's port quarter, 1 km off and closing; ownship,
+    // standing on, turns 40° to port at 300 s (within 2 nm). Rule 17(c)
+    // speaks of crossing situations only: the same track latched as being
+    // overtaken is not a 17(c) finding.
+    let rules = RuleParameters::default();
+    let target = VesselState::new(DVec2::new(-1000.0, -600.0), 0.4, 8.0, 50.0);
+    let samples = run(target, 300.0, -40.0, 600.0);
+    let judged = |encounter| {
+        let latch = EncounterLatch::new(encounter, &samples[0].own, 0.0);
+        assess_encounter(&samples, &latch, &rules, &ScoringParameters::default())
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::StandOnTurnedToPort { .. }))
+    };
+    assert!(judged(Encounter::CrossingStandOn));
+    assert!(!judged(Encounter::BeingOvertaken));
 }

@@ -84,7 +84,10 @@
 //!     (5°) or whose SOG has dropped by
 //!     [`action_speed_drop_fraction`](crate::ScoringParameters::action_speed_drop_fraction)
 //!     (20 %); the range then is the action range. None while in force:
-//!     [`NoAction`](crate::ComplianceViolation::NoAction).
+//!     [`NoAction`](crate::ComplianceViolation::NoAction). Only where an
+//!     action was required: the pass predicted at the first in-force
+//!     sample would not keep `d_th` between the hulls; a pass already clear
+//!     owes none of these action findings (decision 42).
 //!   - *early*: where risk arose at or beyond
 //!     [`late_action_range_m`](crate::ScoringParameters::late_action_range_m)
 //!     (2 nm), begun at that range or more; where it arose nearer, begun
@@ -109,7 +112,10 @@
 //!     and not readily apparent (under 30°), are
 //!     [`SmallAlterations`](crate::ComplianceViolation::SmallAlterations).
 //!   - the manner of passing as before: port to port in head-on, not across
-//!     the bow in crossing or overtaking (rules 13-15).
+//!     the bow in crossing or overtaking (rules 13-15): across it within
+//!     [`crossed_ahead_range_m`](crate::ScoringParameters::crossed_ahead_range_m)
+//!     (1 nm) and with a real change of side, not a jitter of the heading
+//!     line (decision 42).
 //! - **Stand on** (crossing stand-on, being overtaken; rule 17): observed COG
 //!   within [`stand_on_course_tolerance_rad`](crate::RuleParameters::stand_on_course_tolerance_rad)
 //!   (15°) and SOG within [`stand_on_speed_tolerance_mps`](crate::RuleParameters::stand_on_speed_tolerance_mps)
@@ -146,6 +152,7 @@
 //! | [`stand_on_speed_tolerance_mps`](crate::RuleParameters::stand_on_speed_tolerance_mps) | 1 m/s | stand-on drift (NTNU evaluator) |
 //! | [`stand_on_action_range_m`](crate::RuleParameters::stand_on_action_range_m) | 2 nm | rule 17(a)(ii) action range (Woerner 2019) |
 //! | [`clearance_m`](crate::ScoringParameters::clearance_m) | 200 m | `d_th` (the paper's open-sea value; a run passes its own) |
+//! | [`crossed_ahead_range_m`](crate::ScoringParameters::crossed_ahead_range_m) | 1 nm | crossing ahead of the bow beyond the risk-of-collision miss (`risk_cpa_m`) is an already-clear pass (decision 42) |
 //! | [`max_turn_rate_rad_s`](ObservedParameters::max_turn_rate_rad_s) | none | the vessel's limit, when the recording has one |
 //! | [`noise`](ObservedParameters::noise) | 0.3°, 600 s, 6 σ, 8 σ | course-jitter budget, longest window, detectable change and action detection above the jitter (decision 31) |
 //!
@@ -155,7 +162,8 @@
 //! use vorrt_colregs::observed::{judge, ObservedParameters, RecordedTrack, Recording};
 //! use vorrt_colregs::Encounter;
 //! use glam::DVec2;
-//! // Head-on at 6 m/s each, 9 km apart; ownship holds course: no action.
+//! // Head-on at 6 m/s each, 9 km apart, set to pass 150 m apart (50 m
+//! // between the hulls, under d_th); ownship holds course: no action.
 //! let times_s: Vec<f64> = (0..=150).map(|i| f64::from(i) * 10.0).collect();
 //! let track = |name: &str, start: DVec2, velocity: DVec2| RecordedTrack {
 //!     name: name.into(),
@@ -166,7 +174,7 @@
 //! };
 //! let recording = Recording {
 //!     ownship: track("ownship", DVec2::ZERO, DVec2::new(0.0, 6.0)),
-//!     targets: vec![track("TS1", DVec2::new(300.0, 9000.0), DVec2::new(0.0, -6.0))],
+//!     targets: vec![track("TS1", DVec2::new(150.0, 9000.0), DVec2::new(0.0, -6.0))],
 //!     times_s: times_s.clone(),
 //! };
 //! let judgement = judge(&recording, &ObservedParameters::default()).unwrap();
@@ -178,6 +186,8 @@
 //! ```
 
 mod judge;
+#[cfg(test)]
+mod mariner_tests;
 mod noise;
 #[cfg(test)]
 mod noise_tests;

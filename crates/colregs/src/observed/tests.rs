@@ -244,15 +244,16 @@ fn crossing_astern_is_compliant_and_ahead_is_not() {
         Encounter::CrossingGiveWay
     );
     assert!(astern.compliant, "{:?}", findings(&astern));
-    // Holding course with the target 1.5 km later: ownship crosses its bow.
+    // Holding course with the target 1.5 km later: ownship crosses its bow
+    // (within the 1 nm of decision 42); the pass, 1.06 km, was clear of d_th,
+    // so no action was owed.
     let ahead = crossing(|_, _, _| 0.0, 4500.0);
     assert_eq!(
         ahead.targets[0].latch.expect("risk").encounter,
         Encounter::CrossingGiveWay
     );
     let names = findings(&ahead);
-    assert!(names.contains(&"crossed_ahead"), "{names:?}");
-    assert!(names.contains(&"no_action"), "{names:?}");
+    assert_eq!(names, vec!["crossed_ahead"]);
 }
 
 #[test]
