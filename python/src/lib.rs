@@ -307,7 +307,12 @@ fn plan_json(py: Python<'_>, scenario: &PyScenario, seed: Option<u64>) -> PyResu
             .planner_config()
             .map_err(|error| scenario_error(&error))?;
         let d_th_m = config.clearance_m;
-        let mut planner = Planner::new(config)
+        // Land, no-go areas and the traffic separation scheme, as
+        // `vorrt plan` and the closed loop keep them.
+        let chart = vorrt_scenarios::Chart::from_scenario(scenario)
+            .map_err(|error| scenario_error(&error))?;
+        let constraint = (chart, vorrt_scenarios::scenario_constraint(scenario));
+        let mut planner = Planner::with_constraint(config, constraint)
             .map_err(|error| PlanningError::new_err(format!("{}: {error}", scenario.source)))?;
         let plan = planner
             .plan(&scenario.planning_problem(), seed)

@@ -166,8 +166,11 @@ fn plan_command(
         .planner_config()
         .map_err(|error| CliError::BadInput(error.to_string()))?;
     let d_th_m = config.clearance_m;
-    // The scenario's traffic separation scheme, as the closed loop keeps it.
-    let constraint = vorrt_scenarios::scenario_constraint(&scenario);
+    // The scenario's land and no-go areas and its traffic separation
+    // scheme, as the closed loop keeps them.
+    let chart = vorrt_scenarios::Chart::from_scenario(&scenario)
+        .map_err(|error| CliError::BadInput(error.to_string()))?;
+    let constraint = (chart, vorrt_scenarios::scenario_constraint(&scenario));
     let mut planner = Planner::with_constraint(config, constraint)
         .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
     let outcome = {

@@ -334,6 +334,34 @@ fn check_of_a_missing_file_exits_2() {
     );
 }
 
+/// `vorrt plan` keeps the scenario's land as the closed loop does: the
+/// plan across `coastal/island` rounds the island, every leg clear of it by
+/// the land clearance.
+#[test]
+fn plan_keeps_off_land() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenarios/fixtures/coastal/island.ron");
+    let output = vorrt(&["plan", path_str(&path)]);
+    assert_eq!(output.status.code(), Some(0), "stderr: {}", stderr(&output));
+    let plan: PlanOutput = serde_json::from_str(&stdout(&output)).unwrap();
+    let scenario = Scenario::load(&path).unwrap();
+    let chart = vorrt_scenarios::Chart::from_scenario(&scenario).unwrap();
+    assert!(
+        plan.waypoints.len() > 2,
+        "a straight plan runs over the island"
+    );
+    for leg in plan.waypoints.windows(2) {
+        let distance_m = chart.segment_land_distance_m(
+            vorrt_scenarios::DVec2::new(leg[0].east_m, leg[0].north_m),
+            vorrt_scenarios::DVec2::new(leg[1].east_m, leg[1].north_m),
+        );
+        assert!(
+            distance_m >= chart.land_clearance_m(),
+            "{distance_m} m from land"
+        );
+    }
+}
+
 #[test]
 fn plan_prints_json_waypoints() {
     let output = vorrt(&["plan", path_str(&crossing())]);
