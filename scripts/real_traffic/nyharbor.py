@@ -3,10 +3,10 @@
 Harbor on 2020-06-30 (MarineCadastre AIS, shipped by the PyPI package
 `tracktable-data`, BSD-2; never committed here).
 
-    python3 -m venv /tmp/venv && /tmp/venv/bin/pip install tracktable-data
+    python3 -m venv target/data-venv && target/data-venv/bin/pip install tracktable-data
     python3 scripts/real_traffic/nyharbor.py --vorrt target/release/vorrt-cli \
-        --csv "$(/tmp/venv/bin/python -c 'import tracktable_data, pathlib; print(pathlib.Path(tracktable_data.__file__).parent / "python_example_data/NYHarbor_2020_06_30_first_hour.csv")')" \
-        --out /tmp/nyharbor
+        --csv "$(target/data-venv/bin/python -c 'import tracktable_data, pathlib; print(pathlib.Path(tracktable_data.__file__).parent / "python_example_data/NYHarbor_2020_06_30_first_hour.csv")')" \
+        --out out/nyharbor
 
 The data's columns: BaseDateTime, LON, LAT, MMSI, SOG, COG, Heading,
 VesselName, IMO, CallSign, VesselType, Status, Length, Width, Draft, Cargo,
