@@ -309,9 +309,8 @@ fn plan_json(py: Python<'_>, scenario: &PyScenario, seed: Option<u64>) -> PyResu
         let d_th_m = config.clearance_m;
         // Land, no-go areas and the traffic separation scheme, as
         // `vorrt plan` and the closed loop keep them.
-        let chart = vorrt_scenarios::Chart::from_scenario(scenario)
+        let constraint = vorrt_scenarios::planning_constraint(scenario)
             .map_err(|error| scenario_error(&error))?;
-        let constraint = (chart, vorrt_scenarios::scenario_constraint(scenario));
         let mut planner = Planner::with_constraint(config, constraint)
             .map_err(|error| PlanningError::new_err(format!("{}: {error}", scenario.source)))?;
         let plan = planner

@@ -168,9 +168,8 @@ fn plan_command(
     let d_th_m = config.clearance_m;
     // The scenario's land and no-go areas and its traffic separation
     // scheme, as the closed loop keeps them.
-    let chart = vorrt_scenarios::Chart::from_scenario(&scenario)
+    let constraint = vorrt_scenarios::planning_constraint(&scenario)
         .map_err(|error| CliError::BadInput(error.to_string()))?;
-    let constraint = (chart, vorrt_scenarios::scenario_constraint(&scenario));
     let mut planner = Planner::with_constraint(config, constraint)
         .map_err(|error| CliError::BadInput(format!("{}: {error}", scenario.source)))?;
     let outcome = {

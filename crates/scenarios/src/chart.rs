@@ -316,6 +316,23 @@ pub(crate) fn check_off_land(scenario: &Scenario) -> Result<(), (String, String)
     Ok(())
 }
 
+/// Everything a plan of `scenario` keeps beside the COLREGs: its [`Chart`]
+/// (land, no-go areas) and its traffic separation scheme
+/// ([`crate::scenario_constraint`]). The one place `vorrt plan`, the Python
+/// package's `plan` and the closed loop ([`crate::ClosedLoop`], which pairs
+/// the chart with the constraint it is given) get them from.
+///
+/// # Errors
+/// As [`Chart::from_scenario`].
+pub fn planning_constraint(
+    scenario: &Scenario,
+) -> Result<(Chart, vorrt_planner::scheme::SchemeConstraint), ScenarioError> {
+    Ok((
+        Chart::from_scenario(scenario)?,
+        crate::scenario_constraint(scenario),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -408,5 +425,29 @@ mod tests {
         let chart = Chart::from_scenario(&far).unwrap();
         assert!(chart.has_land());
         assert!(chart.land_distance_m(DVec2::ZERO) > 40.0 * 1852.0);
+    }
+
+    /// The planning constraint refuses a leg over the island fixture's
+    /// island (land) and keeps nothing from a leg far off it.
+    #[test]
+    fn the_planning_constraint_keeps_the_land() {
+        let scenario = crate::fixtures::find("coastal/island")
+            .expect("bundled")
+            .load()
+            .unwrap();
+        let constraint = planning_constraint(&scenario).unwrap();
+        let leg = |east_m: f64| Segment {
+            start_m: DVec2::new(east_m, -5000.0),
+            end_m: DVec2::new(east_m, 5000.0),
+            margin_m: 0.0,
+            start_elapsed_s: 0.0,
+            duration_s: 1600.0,
+            course_rad: 0.0,
+        };
+        assert_eq!(
+            constraint.check_segment(&leg(0.0)),
+            Err(ConstraintViolation::Land)
+        );
+        assert_eq!(constraint.check_segment(&leg(20_000.0)), Ok(()));
     }
 }

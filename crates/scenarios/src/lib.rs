@@ -22,7 +22,7 @@ pub mod validate;
 
 pub use area::{Area, DEFAULT_LAND_CLEARANCE_M, MAX_LAND_CLEARANCE_M};
 pub use batch::{BatchError, BatchItem, BatchRow, BatchSummary, Shard, run_batch};
-pub use chart::Chart;
+pub use chart::{Chart, planning_constraint};
 pub use error::ScenarioError;
 pub use evaluation::{
     Evaluation, TargetEvaluation, evaluate, evaluate_with, observed_judgement, scoring_for,
