@@ -147,6 +147,31 @@ fn multi_vessel_has_three_targets_on_collision_courses() {
     }
 }
 
+/// The report agrees with the fixture's description: ownship gives way to
+/// TS2, and that alteration clears TS1 and TS3 before risk arises with them
+/// (no encounter latched).
+#[test]
+fn multi_vessel_report_agrees_with_its_description() {
+    let scenario = paper("multi_vessel");
+    let record = vorrt_scenarios::simulate(&scenario, 1).expect("runs");
+    let evaluation = vorrt_scenarios::evaluate(&scenario, &record);
+    let classes: Vec<_> = evaluation
+        .targets
+        .iter()
+        .map(|target| target.encounter)
+        .collect();
+    assert_eq!(
+        classes,
+        [
+            vorrt_colregs::Encounter::None,
+            vorrt_colregs::Encounter::CrossingGiveWay,
+            vorrt_colregs::Encounter::None
+        ]
+    );
+    let description = scenario.description.expect("described");
+    assert!(description.contains("TS2 as crossing_give_way and TS1 and TS3 as none"));
+}
+
 #[test]
 #[expect(clippy::float_cmp, reason = "the test pins exact results")]
 fn tss_fixture_is_a_busy_westbound_lane() {
