@@ -278,21 +278,10 @@ fn progress_line(outcome: &Outcome) -> String {
     }
 }
 
-/// Escapes text for HTML.
+/// Escapes text for HTML: the replay page's escaping, one place.
 #[must_use]
 pub(crate) fn escape(text: &str) -> String {
-    let mut escaped = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => escaped.push_str("&amp;"),
-            '<' => escaped.push_str("&lt;"),
-            '>' => escaped.push_str("&gt;"),
-            '"' => escaped.push_str("&quot;"),
-            '\'' => escaped.push_str("&#39;"),
-            _ => escaped.push(c),
-        }
-    }
-    escaped
+    crate::replay::escape_html(text)
 }
 
 /// A relative link path with forward slashes.
