@@ -1,8 +1,9 @@
 //! The `distance` plot: distance from ownship to each target over time.
 
+use super::time_axes::time_chart;
 use super::{
     CLEARANCE_COLOUR, Chart, FAMILY, Label, METRES_PER_NM, PixelBox, PlotData, Shift, clip_below,
-    closest, draw_labels, format_distance, labelled, named_count, placer_for, tick, to_text,
+    closest, draw_labels, format_distance, labelled, named_count, placer_for, to_text,
 };
 use crate::font;
 use plotters::prelude::*;
@@ -18,28 +19,13 @@ pub(super) fn draw_distance<DB: DrawingBackend>(
     let series = distance_series(data, &minutes);
     let y_max = y_max_m(data, &series);
     let x_max = minutes.last().copied().unwrap_or(0.0).max(1.0);
-    let mut chart = ChartBuilder::on(root)
-        .caption(
-            format!("{}: distance from ownship to each target", data.title),
-            (FAMILY, 24).into_font().style(FontStyle::Bold),
-        )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..x_max, 0.0..y_max)
-        .map_err(to_text)?;
-    chart
-        .configure_mesh()
-        .x_desc("time (min)")
-        .y_desc("distance (m)")
-        .x_label_formatter(&|value| tick(*value))
-        .y_label_formatter(&|value| tick(*value))
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .bold_line_style(RGBColor(210, 210, 210))
-        .light_line_style(RGBColor(240, 240, 240))
-        .draw()
-        .map_err(to_text)?;
+    let mut chart = time_chart(
+        root,
+        format!("{}: distance from ownship to each target", data.title),
+        "distance (m)",
+        x_max,
+        y_max,
+    )?;
     draw_clearance_line(&mut chart, data, x_max)?;
     let in_legend = closest(&data.targets, named_count(data.targets.len()));
     draw_target_distances(&mut chart, data, &series, y_max, &in_legend)?;

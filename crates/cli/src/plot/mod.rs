@@ -30,6 +30,7 @@ mod palette;
 #[cfg(test)]
 mod render_tests;
 mod speed;
+mod time_axes;
 mod trajectories;
 
 use distance::draw_distance;

@@ -2,9 +2,10 @@
 //! manoeuvre (ownship slowing for a target, a target stopping at its goal)
 //! shows, which the track plot cannot (decision 36).
 
+use super::time_axes::time_chart;
 use super::{
     Chart, FAMILY, Label, MAX_LABELS, MAX_MARKED, OWNSHIP_COLOUR, PixelBox, PlotData, Shift, Track,
-    closest, draw_labels, placer_for, tick, to_text,
+    closest, draw_labels, placer_for, to_text,
 };
 use crate::font;
 use plotters::prelude::*;
@@ -86,28 +87,13 @@ pub(super) fn draw_speed<DB: DrawingBackend>(
         .flat_map(|track| track.speeds_kn.iter().copied())
         .fold(0.0_f64, f64::max);
     let y_max = (1.15 * fastest).max(1.0);
-    let mut chart = ChartBuilder::on(root)
-        .caption(
-            format!("{}: speed of every vessel", data.title),
-            (FAMILY, 24).into_font().style(FontStyle::Bold),
-        )
-        .margin(15)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..x_max, 0.0..y_max)
-        .map_err(to_text)?;
-    chart
-        .configure_mesh()
-        .x_desc("time (min)")
-        .y_desc("speed (kn)")
-        .x_label_formatter(&|value| tick(*value))
-        .y_label_formatter(&|value| tick(*value))
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .bold_line_style(RGBColor(210, 210, 210))
-        .light_line_style(RGBColor(240, 240, 240))
-        .draw()
-        .map_err(to_text)?;
+    let mut chart = time_chart(
+        root,
+        format!("{}: speed of every vessel", data.title),
+        "speed (kn)",
+        x_max,
+        y_max,
+    )?;
     let changes: Vec<Vec<SpeedChange>> = data
         .targets
         .iter()
