@@ -11,9 +11,7 @@ use serde::{Deserialize, Serialize};
 use vorrt_colregs::VesselState;
 use vorrt_geometry::{DVec2, angle, units};
 use vorrt_planner::PlannerConfig;
-use vorrt_scenarios::{
-    LocalFrame, PlannerSettings, Scenario, SimulationRecord, SimulationSettings, VesselSpec,
-};
+use vorrt_scenarios::{LocalFrame, Scenario, SimulationRecord, VesselSpec};
 
 /// What the judge is told beyond the tracks.
 #[derive(Debug, Clone, PartialEq)]
@@ -548,24 +546,10 @@ fn synthesized_scenario(
     Ok(Scenario {
         name,
         description: Some(format!("synthesized by vorrt judge from {file}")),
-        ownship,
         targets,
-        planner: PlannerSettings::default(),
-        simulation: SimulationSettings::default(),
-        lanes: Vec::new(),
-        land: Vec::new(),
-        no_go: Vec::new(),
-        land_geojson: None,
-        land_clearance_m: None,
-        geojson_land: Vec::new(),
-        base_dir: None,
-        separation_zones: Vec::new(),
-        rule10: vorrt_scenarios::Rule10Settings::default(),
-        seed: None,
         start_time,
         source: format!("{file} (scenario synthesized by vorrt judge)"),
-        recorded_tracks: None,
-        recorded: vorrt_scenarios::RecordedTracks::default(),
+        ..Scenario::new(String::new(), ownship)
     })
 }
 

@@ -7,7 +7,7 @@ use super::{
     GeneratorError, MAX_GENERATED_TARGETS, OWNSHIP_LENGTH_M, TargetBehaviour, check_range,
     planner_for_route,
 };
-use crate::scenario::{Scenario, SimulationSettings, VesselSpec};
+use crate::scenario::{Scenario, VesselSpec};
 use glam::DVec2;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
@@ -294,24 +294,11 @@ pub fn open_sea(spec: &OpenSeaSpec, seed: u64, index: u64) -> Result<Scenario, G
                 .collect::<Vec<_>>()
                 .join(", ")
         )),
-        ownship,
         targets,
         planner: planner_for_route(route_m, None),
-        simulation: SimulationSettings::default(),
-        lanes: Vec::new(),
-        land: Vec::new(),
-        no_go: Vec::new(),
-        land_geojson: None,
-        land_clearance_m: None,
-        geojson_land: Vec::new(),
-        base_dir: None,
-        separation_zones: Vec::new(),
-        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
-        start_time: None,
         source: format!("<generated open-sea seed {seed} index {index}>"),
-        recorded_tracks: None,
-        recorded: crate::RecordedTracks::default(),
+        ..Scenario::new(String::new(), ownship)
     };
     scenario.validate()?;
     Ok(scenario)

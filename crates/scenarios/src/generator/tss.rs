@@ -2,7 +2,7 @@
 
 use super::random::{behaviour_stream, round_to, run_seed, scenario_stream, uniform, uniform_in};
 use super::{GeneratorError, OWNSHIP_LENGTH_M, TargetBehaviour, check_range, planner_for_route};
-use crate::scenario::{Lane, Scenario, SimulationSettings, VesselSpec};
+use crate::scenario::{Lane, Scenario, VesselSpec};
 use crate::scheme::SeparationZoneSpec;
 use serde::{Deserialize, Serialize};
 use vorrt_geometry::units;
@@ -256,24 +256,13 @@ pub fn tss(spec: &TssSpec, seed: u64, index: u64) -> Result<Scenario, GeneratorE
     let mut scenario = Scenario {
         name,
         description: Some(description),
-        ownship,
         targets,
         planner: planner_for_route(route_m, Some(100.0)),
-        simulation: SimulationSettings::default(),
         lanes: lanes.into_iter().map(|(lane, _)| lane).collect(),
-        land: Vec::new(),
-        no_go: Vec::new(),
-        land_geojson: None,
-        land_clearance_m: None,
-        geojson_land: Vec::new(),
-        base_dir: None,
         separation_zones: separation_zones(spec, far_nm),
-        rule10: crate::scheme::Rule10Settings::default(),
         seed: Some(run_seed(seed, index)),
-        start_time: None,
         source: format!("<generated tss seed {seed} index {index}>"),
-        recorded_tracks: None,
-        recorded: crate::RecordedTracks::default(),
+        ..Scenario::new(String::new(), ownship)
     };
     scenario.validate()?;
     Ok(scenario)
