@@ -38,7 +38,12 @@ use vorrt_geometry::{closest_point_of_approach, units};
 /// keeps that clearance (a target does not sail through an island into its
 /// encounter), and islands keep the land clearance from each other and the
 /// coast; otherwise the land is drawn again, up to `max_land_attempts`
-/// times. The targets are those of [`open_sea`] for the same seed and
+/// times. Where none of those draws is kept (many targets sweep most of the
+/// water near the route), the land is drawn sparser, `max_land_attempts`
+/// times each: first one island and the coast half as often, then one
+/// island of the smallest radius and no coast
+/// ([`CoastalSpec::land_grades`]); the scenario's description says how much
+/// land it got. The targets are those of [`open_sea`] for the same seed and
 /// index; the land comes from a stream of its own.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct CoastalSpec {
@@ -95,6 +100,35 @@ impl CoastalSpec {
             land_clearance_m: None,
             max_land_attempts: 500,
         }
+    }
+
+    /// The grades of land tried in turn, densest first: this spec, then
+    /// one island with the coast half as likely, then one island of the
+    /// smallest radius and no coast (a grade equal to the one before is
+    /// left out). The route, the targets and every margin stay as they are.
+    #[must_use]
+    pub fn land_grades(&self) -> Vec<Self> {
+        let one_island = (self.islands.0.min(1), self.islands.1.min(1));
+        let smallest_nm = self.island_radius_nm.0;
+        let mut grades = vec![*self];
+        for grade in [
+            Self {
+                islands: one_island,
+                coast_probability: self.coast_probability / 2.0,
+                ..*self
+            },
+            Self {
+                islands: one_island,
+                coast_probability: 0.0,
+                island_radius_nm: (smallest_nm, smallest_nm),
+                ..*self
+            },
+        ] {
+            if grades.last() != Some(&grade) {
+                grades.push(grade);
+            }
+        }
+        grades
     }
 
     /// The same with another behaviour of the targets.
@@ -371,9 +405,13 @@ pub fn coastal(spec: &CoastalSpec, seed: u64, index: u64) -> Result<Scenario, Ge
     let apart_nm = units::m_to_nautical_miles(scenario.land_clearance_m()) + 0.1;
     let margin_m = units::nautical_miles_to_m(spec.route_margin_nm);
     let mut rng = land_stream(seed, index);
-    for _ in 0..spec.max_land_attempts {
+    let grades = spec.land_grades();
+    let draws = grades
+        .iter()
+        .flat_map(|grade| std::iter::repeat_n(grade, spec.max_land_attempts));
+    for grade in draws {
         let mut candidate = scenario.clone();
-        candidate.land = draw_land(&mut rng, spec, goal_nm, apart_nm);
+        candidate.land = draw_land(&mut rng, grade, goal_nm, apart_nm);
         if candidate.validate().is_ok() && clear_of_land(&candidate, margin_m) {
             let islands = candidate
                 .land
@@ -395,7 +433,7 @@ pub fn coastal(spec: &CoastalSpec, seed: u64, index: u64) -> Result<Scenario, Ge
     }
     Err(GeneratorError::LandPlacement {
         index,
-        attempts: spec.max_land_attempts,
+        attempts: spec.max_land_attempts * grades.len(),
     })
 }
 
@@ -452,5 +490,31 @@ mod tests {
             bays >= 1,
             "{bays} bays {coasts} coasts {headlands} headlands"
         );
+    }
+
+    #[test]
+    fn land_grades_go_from_the_spec_to_one_small_island() {
+        let spec = CoastalSpec::with_targets(1);
+        let grades = spec.land_grades();
+        assert_eq!(grades.len(), 3);
+        assert_eq!(grades[0], spec);
+        assert_eq!(grades[1].islands, (1, 1));
+        assert!((grades[1].coast_probability - 0.25).abs() < 1e-12);
+        assert_eq!(grades[2].islands, (1, 1));
+        assert!(grades[2].coast_probability.abs() < 1e-12);
+        assert_eq!(grades[2].island_radius_nm, (0.2, 0.2));
+        // Already the sparsest: nothing sparser is invented.
+        assert_eq!(grades[2].land_grades(), vec![grades[2]]);
+    }
+
+    #[test]
+    fn many_targets_get_sparser_land_instead_of_no_scenario() {
+        // Seed 11 index 136 with 8 targets: none of 500 draws of the
+        // default land kept every target's track clear, and the batch gave
+        // up; a sparser grade is kept.
+        let spec = CoastalSpec::with_targets(8);
+        let scenario = coastal(&spec, 11, 136).expect("generated");
+        assert!(!scenario.land.is_empty(), "{}", scenario.name);
+        assert!(clear_of_land(&scenario, 0.0), "{}", scenario.name);
     }
 }
