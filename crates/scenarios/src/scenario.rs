@@ -446,7 +446,9 @@ pub enum Behaviour {
     /// starboard side, or overtaking ownship — it turns
     /// [`COLREGS_TURN_DEG`] to starboard from the course it held when the
     /// risk arose and holds that course until the two have passed, then
-    /// resumes toward its goal. As stand-on vessel it keeps course and speed.
+    /// resumes toward its goal; while its return would at once bring risk
+    /// of collision with ownship back, it holds its alteration up to 30 s
+    /// longer (decision 43). As stand-on vessel it keeps course and speed.
     /// The rule constants are the scenario's (`planner` section).
     Colregs,
     /// Steer for the goal (or hold the nominal course without one) with

@@ -134,3 +134,23 @@ fn sixteen_acting_vessels_of_run_511_are_kept_clear_of() {
         evaluation.min_distance_m
     );
 }
+
+/// Run 64 of the campaign with 8 COLREGs-obeying targets (seed 11): a
+/// vessel overtaking ownship turned 35° away, which released its latch, and
+/// steered back at once, which latched it again, every 5 s for minutes;
+/// ownship planned 58 times, 50 of them between 655 s and 955 s. Holding
+/// its alteration while its return would bring risk back (decision 43),
+/// the target no longer swings, and ownship plans a handful of times.
+#[test]
+fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_step() {
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 64).expect("generated");
+    let record = simulate(&scenario, 4_163_828_970_110_336_130).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(
+        record.plans.len() <= 12,
+        "{} planner calls",
+        record.plans.len()
+    );
+    assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
+}

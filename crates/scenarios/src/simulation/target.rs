@@ -12,6 +12,11 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_geometry::{angle, units};
 use vorrt_jfs::TargetState;
 
+/// The longest a [`Behaviour::Colregs`] target holds its alteration after
+/// its encounter with ownship was released, seconds, while its return
+/// would bring risk back (`BehaviourTarget::resumes`, decision 43).
+pub(super) const RESUME_AFTER_S: f64 = 30.0;
+
 /// A target that is seen this far off the course to its announced
 /// destination is predicted on the course it is seen on, radians (10°, twice
 /// the course noise of a `noisy` target).
@@ -69,6 +74,9 @@ pub(super) struct BehaviourTarget {
     latch: Option<EncounterLatch>,
     /// The course a giving-way [`Behaviour::Colregs`] target holds.
     avoiding_course_rad: Option<f64>,
+    /// When that target's encounter was released while it still holds its
+    /// alteration, seconds (`resumes`).
+    released_at_s: Option<f64>,
     /// Whether a [`Behaviour::SuddenTurn`] target has turned.
     turned: bool,
 }
@@ -108,6 +116,7 @@ impl BehaviourTarget {
             speed_offset_mps: 0.0,
             latch: None,
             avoiding_course_rad: None,
+            released_at_s: None,
             turned: false,
         }
     }
@@ -122,6 +131,29 @@ impl BehaviourTarget {
             Some(_) => self.state.vessel.course_rad,
             None => self.nominal_course_rad,
         }
+    }
+
+    /// Whether a [`Behaviour::Colregs`] target whose encounter with ownship
+    /// (`own`) was released `held_s` ago resumes its route at `time_s`: once
+    /// steering for it again latches no encounter with ownship at once, or
+    /// after [`RESUME_AFTER_S`] in any case. Its give-way turn opens the
+    /// range, which releases the latch (`has_passed`), and its return closed
+    /// it again: resumed at once, it turned back and forth at every step,
+    /// which rule 8(b) forbids and rule 8(d) ("until the other vessel is
+    /// finally past and clear") does not allow (decision 43). So it holds
+    /// its alteration while its return would bring risk of collision back,
+    /// as ownship's own return is checked (decision 28); the bound keeps two
+    /// vessels from holding each other off their routes for ever.
+    fn resumes(&self, own: &VesselState, held_s: f64, time_s: f64, rules: &RuleParameters) -> bool {
+        if held_s >= RESUME_AFTER_S {
+            return true;
+        }
+        let resumed = VesselState {
+            course_rad: self.intended_course_rad(),
+            speed_mps: self.nominal_speed_mps,
+            ..self.state.vessel
+        };
+        update_latch(None, &resumed, own, time_s, rules).is_none()
     }
 
     /// Sails `duration_s` at `course_rad` and `speed_mps`, stopping on the
@@ -195,13 +227,30 @@ impl TargetMotion for BehaviourTarget {
                 self.latch = update_latch(self.latch, &self.state.vessel, own, time_s, rules);
                 match self.latch {
                     Some(latch) if latch.encounter.role() == Role::GiveWay => {
+                        self.released_at_s = None;
                         if self.avoiding_course_rad.is_none() {
                             self.avoiding_course_rad = Some(angle::normalize_2pi(
                                 latch.reference_course_rad + COLREGS_TURN_DEG.to_radians(),
                             ));
                         }
                     }
-                    _ => self.avoiding_course_rad = None,
+                    Some(_) => {
+                        self.avoiding_course_rad = None;
+                        self.released_at_s = None;
+                    }
+                    // Released: back to the route, unless its return would
+                    // latch an encounter with ownship again at once: then it
+                    // holds its alteration, for a bounded time (`resumes`,
+                    // rule 8(d), decision 43).
+                    None => {
+                        if self.avoiding_course_rad.is_some() {
+                            let released_at_s = *self.released_at_s.get_or_insert(time_s);
+                            if self.resumes(own, time_s - released_at_s, time_s, rules) {
+                                self.avoiding_course_rad = None;
+                                self.released_at_s = None;
+                            }
+                        }
+                    }
                 }
                 let course = self
                     .avoiding_course_rad
@@ -347,6 +396,57 @@ mod tests {
             speed_mps,
             100.0,
         )
+    }
+
+    #[test]
+    fn a_vessel_that_gives_way_does_not_turn_back_at_every_step() {
+        let rules = RuleParameters::default();
+        // Ownship north at 5 m/s; a COLREGs-obeying vessel 2500 m astern
+        // overtakes at 6 m/s for a goal far north. Its 35° turn opens the
+        // range at once (released: opening beyond `risk_cpa_m`), and its
+        // return would close it again: resumed at once, it turned back and
+        // forth at every step (decision 43).
+        let mut own = vessel(0.0, 0.0, 0.0, 5.0);
+        let mut target = BehaviourTarget {
+            state: TargetState::toward_goal(
+                vessel(0.0, -2500.0, 0.0, 6.0),
+                DVec2::new(0.0, 50_000.0),
+            ),
+            behaviour: Behaviour::Colregs,
+            nominal_speed_mps: 6.0,
+            nominal_course_rad: 0.0,
+            noise: None,
+            course_offset_rad: 0.0,
+            speed_offset_mps: 0.0,
+            latch: None,
+            avoiding_course_rad: None,
+            released_at_s: None,
+            turned: false,
+        };
+        let step_s = 5.0;
+        let (mut turned_away_s, mut returns) = (None, Vec::new());
+        for step in 0..120 {
+            let time_s = f64::from(step) * step_s;
+            let was_avoiding = target.avoiding_course_rad.is_some();
+            target.advance(time_s, time_s + step_s, &own, &rules);
+            own = own.advanced(step_s);
+            match (was_avoiding, target.avoiding_course_rad.is_some()) {
+                (false, true) => turned_away_s = Some(time_s),
+                (true, false) => returns.push(time_s - turned_away_s.expect("turned first")),
+                _ => {}
+            }
+        }
+        assert!(turned_away_s.is_some(), "it gives way");
+        // Every return comes after the alteration was held for the bound at
+        // least (the old target returned the step after it turned).
+        assert!(
+            !returns.is_empty(),
+            "it returns while its route is still at risk only after the bound"
+        );
+        assert!(
+            returns.iter().all(|&held_s| held_s >= RESUME_AFTER_S),
+            "{returns:?}"
+        );
     }
 
     #[test]
