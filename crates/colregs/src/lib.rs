@@ -9,6 +9,7 @@ pub mod maneuver;
 pub mod observed;
 pub mod parameters;
 pub mod passing;
+mod port_turn_gate;
 pub mod risk;
 pub mod rule10;
 pub mod rules;

@@ -45,6 +45,8 @@ use glam::DVec2;
 use std::f64::consts::PI;
 use vorrt_geometry::{Cpa, angle};
 
+pub use crate::port_turn_gate::PortTurnGate;
+
 /// Whether a target at `range_m` is inside the minimum threshold distance
 /// ([`mtd_m`](RuleParameters::mtd_m)): nearer, it can be a risk of collision
 /// (rule 7) and an encounter; farther, it is not yet one.

@@ -28,7 +28,8 @@ use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::rules::{
-    acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel, may_act,
+    PortTurnGate, acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel,
+    may_act,
 };
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, ManeuverViolation, Role, VesselState, check_action,
@@ -431,15 +432,20 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             speed_mps: candidate.velocity_mps.length(),
             ..self.ownship
         };
+        let gate = PortTurnGate::new(course_before_rad, candidate.course_rad);
         for (index, track) in self.tracks.iter().enumerate() {
             if !self.may_reach(index) {
                 continue;
             }
             // Beyond MTD no vessel is one turned toward (the rule's first
-            // test, on the same distance), and its full state, dearer
-            // than its position, is not needed.
+            // test, on the same distance), nor abaft the beam or to
+            // starboard of the course before (its bearing tests, by the
+            // gate's dot products: decision 46); for those its full state,
+            // dearer than its position, is not needed.
             let position_m = track.position_at(candidate.start_elapsed_s);
-            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules) {
+            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules)
+                || !gate.may_turn_toward(position_m - candidate.start_m)
+            {
                 continue;
             }
             let target = track.state_at(candidate.start_elapsed_s);

@@ -395,6 +395,8 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
 ///   held before it, held in turn: the alteration is held until the other
 ///   vessel is past and clear (rule 8(d)), and the return toward the route
 ///   waits until heading for the goal meets no one.
+/// - **Keep the course within the drift allowed, then act**: where both
+///   fail, the first on the present course plus [`STAND_ON_DRIFT_DEG`].
 ///
 /// ```
 /// use vorrt_planner::simplify::{hold_then_alter, Speeds};
@@ -430,9 +432,12 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
     goal_m: DVec2,
     state: &EncounterState,
 ) -> Option<Vec<SimplifiedLeg>> {
+    // The stand-on drifts come last: every plan found before is kept.
     let firsts = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
-    for &first_deg in firsts {
-        let second = if first_deg == 0.0 {
+    let drifts = STAND_ON_DRIFT_DEG.map(|deg| (deg, true));
+    let firsts = firsts.map(|deg| (*deg, false)).chain(drifts);
+    for (first_deg, drift) in firsts {
+        let second = if first_deg == 0.0 || drift {
             Alterations::MarinersAfterHolding
         } else {
             Alterations::Resume(first_deg)
@@ -462,6 +467,10 @@ pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
     }
     None
 }
+
+/// Starboard drifts of the stand-on hold of [`hold_then_alter`], degrees:
+/// within rule 17(a)(i)'s 15° (decision 46).
+pub const STAND_ON_DRIFT_DEG: [f64; 2] = [5.0, 10.0];
 
 /// How far along the course onto which `turn` turns (with no straight run)
 /// `goal_m` comes abeam, metres from the turn's end (negative: already

@@ -306,3 +306,38 @@ fn two_alterations_are_planned_where_one_cannot_be_sailed() {
     let evaluation = evaluate(&scenario, &record);
     assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
 }
+
+#[test]
+fn a_stand_on_course_inside_a_velocity_obstacle_drifts_with_no_tree() {
+    // Imazu 13 and 16: the present course of a stand-on vessel is inside a
+    // velocity obstacle from the start. The hold drifts 5° or 10° to
+    // starboard, within rule 17(a)(i)'s tolerance (decision 46), at t = 0.
+    // Before, a tree of 32 000 samples failed, a safety-only plan was
+    // sailed and a retry 20 s in found the drifted hold.
+    for name in ["imazu/imazu_13.ron", "imazu/imazu_16.ron"] {
+        let scenario = fixture(name);
+        let record = simulate(&scenario, 1).expect("valid settings");
+        first_plan_keeps_every_rule_with_no_tree(&record);
+        let rules = scenario.planner_config().expect("valid").rules;
+        let first_course_rad = record.plans[0].waypoints[1].course_rad;
+        let drift =
+            vorrt_geometry::angle::signed_turn(record.ownship[0].course_rad, first_course_rad);
+        assert!(
+            drift > 0.0 && drift <= rules.stand_on_course_tolerance_rad,
+            "{name}: {}°",
+            drift.to_degrees()
+        );
+        assert!(
+            !record
+                .plans
+                .iter()
+                .any(|event| event.trigger == PlanTrigger::Retry),
+            "{name}: no retry is needed"
+        );
+        let evaluation = evaluate(&scenario, &record);
+        assert!(
+            evaluation.reached_goal && evaluation.clearance_kept && evaluation.compliant,
+            "{name}"
+        );
+    }
+}
