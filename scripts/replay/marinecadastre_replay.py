@@ -6,14 +6,27 @@ seen by then within --range-nm following its recorded track.
 
     python3 scripts/replay/marinecadastre_replay.py AIS.csv --ownship MMSI --out DIR/NAME.ron
 
+    python3 scripts/replay/marinecadastre_replay.py AIS.csv --ownship MMSI --out DIR/NAME.ron \
+        --land-geojson LAND.geojson --land-clearance-m 100
+
 Vessels first seen after ownship's start are left out (a recording cannot
 say where they were before), and so are vessels inside d_th of ownship at
-the start (vorrt check refuses such a scenario). Standard library only.
+the start (vorrt check refuses such a scenario). With --land-geojson (a land
+GeoJSON written by `vorrt coast`, e.g. the committed
+crates/scenarios/fixtures/coastal/new_york_harbor_ne10m.geojson) the
+scenario names that land, and vessels whose start position lies inside it
+are left out (moored at a pier the 1:10m coast draws as land; vorrt check
+refuses a target on land). Ownship's service speed is the median of its
+recorded speeds over ground while making way (decision 48). Standard
+library only.
 """
 
 import argparse
 import csv
+import json
 import math
+import os
+import statistics
 import sys
 from collections import defaultdict
 from datetime import datetime, timezone
@@ -21,6 +34,9 @@ from datetime import datetime, timezone
 EARTH_RADIUS_M = 6_371_008.8
 DEFAULT_LENGTH_M = 50.0
 D_TH_M = 200.0
+# Below this a vessel is not making way and its speed is no service speed
+# (knots; the observed judgement's MAKING_WAY_MPS, crates/colregs/src/observed/noise.rs).
+MAKING_WAY_KN = 0.5
 
 
 def unix_s(text):
@@ -65,12 +81,53 @@ def read(path):
 
 
 def course(cog):
-    # MarineCadastre writes COG in (-360, 360]; 360 and above "not available".
-    return None if cog is None or abs(cog) >= 360 else cog % 360
+    # MarineCadastre writes the AIS 12-bit COG field read as signed: a
+    # negative value v is v + 409.6 (so AIS 360.0, "not available", shows as
+    # -49.6); 360 and above is "not available" (docs/real-traffic.md, the
+    # same reading as scripts/real_traffic/nyharbor.py).
+    if cog is None:
+        return None
+    if cog < 0:
+        cog += 409.6
+    return None if not 0 <= cog < 360 - 1e-6 else cog
 
 
 def speed(sog):
     return None if sog is None or sog < 0 or sog >= 102.3 else sog
+
+
+def service_speed_kn(reports):
+    """Ownship's service speed (decision 48): the median of its recorded
+    speeds over ground from the run's start to its last report, counting
+    only reports making way; None when it never made way."""
+    moving = [s for s in (speed(r[4]) for r in reports) if s is not None and s >= MAKING_WAY_KN]
+    return round(statistics.median(moving), 2) if moving else None
+
+
+def land_rings(path):
+    """Every ring (outer and holes) of the polygons of a land GeoJSON, as
+    lists of (lon, lat)."""
+    with open(path) as file:
+        data = json.load(file)
+    features = data["features"] if data.get("type") == "FeatureCollection" else [data]
+    rings = []
+    for feature in features:
+        geometry = feature.get("geometry", feature)
+        polygons = {"Polygon": [geometry["coordinates"]], "MultiPolygon": geometry["coordinates"]}
+        for polygon in polygons.get(geometry["type"], []):
+            rings.extend([(p[0], p[1]) for p in ring] for ring in polygon)
+    return rings
+
+
+def on_land(rings, lat, lon):
+    """Even-odd rule over every ring: inside an outer ring and not in a hole.
+    A filter for leaving targets out only; vorrt check judges land itself."""
+    inside = False
+    for ring in rings:
+        for (x1, y1), (x2, y2) in zip(ring, ring[1:] + ring[:1]):
+            if (y1 > lat) != (y2 > lat) and lon < x1 + (lat - y1) * (x2 - x1) / (y2 - y1):
+                inside = not inside
+    return inside
 
 
 def ron_string(text):
@@ -98,8 +155,18 @@ def main():
         default=300.0,
         help="start at ownship's first report this long after the file's first (so that most vessels have reported)",
     )
+    parser.add_argument(
+        "--land-geojson",
+        help="land GeoJSON (from vorrt coast) the scenario names in land_geojson, relative to its folder",
+    )
+    parser.add_argument(
+        "--land-clearance-m",
+        type=float,
+        help="the scenario's land_clearance_m [default: vorrt's, 0.25 nm]",
+    )
     args = parser.parse_args()
     vessels, names, lengths = read(args.ais_csv)
+    rings = land_rings(args.land_geojson) if args.land_geojson else []
     own = vessels.get(args.ownship)
     if not own:
         sys.exit(f"{args.ais_csv}: MMSI {args.ownship} is not in the file")
@@ -122,6 +189,8 @@ def main():
             left_out[f"beyond {args.range_nm} nm"] += 1
         elif distance < D_TH_M + 100:
             left_out["inside d_th of ownship at the start"] += 1
+        elif rings and on_land(rings, before[-1][1], before[-1][2]):
+            left_out["on the chart's land at the start"] += 1
         else:
             kept.append(mmsi)
     stem = args.out.rsplit("/", 1)[-1].removesuffix(".ron")
@@ -148,16 +217,27 @@ def main():
     for mmsi in kept:
         report = [r for r in vessels[mmsi] if r[0] <= start_s][-1]
         targets.append(vessel_ron(used[mmsi], mmsi, report, lengths.get(mmsi, DEFAULT_LENGTH_M), ", behaviour: Recorded"))
-    ownship = vessel_ron(used[args.ownship], args.ownship, start, lengths.get(args.ownship, DEFAULT_LENGTH_M),
+    # The human's speed over the passage, not at the start report (decision 48).
+    service_kn = service_speed_kn([r for r in own if r[0] >= start_s])
+    own_start = start if service_kn is None else start[:4] + (service_kn,)
+    ownship = vessel_ron(used[args.ownship], args.ownship, own_start, lengths.get(args.ownship, DEFAULT_LENGTH_M),
                          f", goal_lat_lon: ({last[1]}, {last[2]})")
+    land = ""
+    if args.land_geojson:
+        folder = os.path.dirname(os.path.abspath(args.out))
+        land += f"    land_geojson: {ron_string(os.path.relpath(os.path.abspath(args.land_geojson), folder))},\n"
+    if args.land_clearance_m is not None:
+        land += f"    land_clearance_m: {args.land_clearance_m},\n"
     with open(args.out, "w") as file:
         file.write(
             f"// Replay of {args.ais_csv} by scripts/replay/marinecadastre_replay.py: ownship MMSI {args.ownship}\n"
             f"// from its report at {start_time} to its last position; {len(kept)} vessels on their recorded tracks.\n"
+            f"// Service speed {own_start[4]} kn: the median of its recorded speeds making way"
+            f" (decision 48; {speed(start[4])} kn at the start report).\n"
             "// Left out: " + (", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none") + ".\n"
             f"Scenario(\n    name: \"replay-{args.ownship}\",\n    ownship: {ownship},\n    targets: [\n"
             + "".join(f"        {t},\n" for t in targets)
-            + f"    ],\n    start_time: \"{start_time}\",\n    recorded_tracks: \"{tracks_name}\",\n)\n"
+            + f"    ],\n{land}    start_time: \"{start_time}\",\n    recorded_tracks: \"{tracks_name}\",\n)\n"
         )
     print(f"wrote {args.out} and {tracks_path}: {len(kept)} targets; left out: {dict(left_out)}")
 

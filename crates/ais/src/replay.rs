@@ -55,6 +55,36 @@ fn csv_field(text: &str) -> String {
     }
 }
 
+/// Below this a vessel is not making way: its speed is no service speed
+/// (knots; the observed judgement's threshold for a course over ground,
+/// `vorrt_colregs::observed` noise model).
+pub const MAKING_WAY_KN: f64 = 0.5;
+
+/// Ownship's service speed in a replay (decision 48): the median of its
+/// recorded speeds over ground from `from_s` (UNIX seconds) on, counting
+/// only reports making way ([`MAKING_WAY_KN`]); `None` when it never made
+/// way. The speed at the start report alone is no service speed: a tug
+/// leaving a berth at 6.7 kn then made 13 kn.
+#[must_use]
+pub fn service_speed_kn(track: &VesselTrack, from_s: f64) -> Option<f64> {
+    let mut speeds_kn: Vec<f64> = track
+        .reports
+        .iter()
+        .filter(|report| report.time_unix_s.is_some_and(|time_s| time_s >= from_s))
+        .filter_map(|report| report.speed_kn)
+        .filter(|speed_kn| *speed_kn >= MAKING_WAY_KN)
+        .collect();
+    speeds_kn.sort_by(f64::total_cmp);
+    let middle = speeds_kn.len() / 2;
+    if speeds_kn.is_empty() {
+        None
+    } else if speeds_kn.len().is_multiple_of(2) {
+        Some(f64::midpoint(speeds_kn[middle - 1], speeds_kn[middle]))
+    } else {
+        Some(speeds_kn[middle])
+    }
+}
+
 /// The first dated report of `track`, UNIX seconds.
 fn first_time_s(track: &VesselTrack) -> Option<f64> {
     track.reports.iter().find_map(|report| report.time_unix_s)
@@ -115,6 +145,13 @@ pub fn build_replay(log: &AisLog, options: &ReplayOptions) -> Result<Replay, Ais
     }
     let mut scenario = import.scenario;
     let mut notes = import.notes;
+    if let Some(speed_kn) = own_track.and_then(|track| service_speed_kn(track, start_s)) {
+        notes.push(format!(
+            "ownship's service speed is {speed_kn:.1} kn, the median of its recorded speeds making way from the start (decision 48; {:.1} kn at the start)",
+            scenario.ownship.speed_kn
+        ));
+        scenario.ownship.speed_kn = speed_kn;
+    }
     scenario.name = format!("replay-{}", options.ownship_mmsi);
     scenario.description = Some(format!(
         "Replay of the AIS log {} by vorrt import-ais --replay: ownship MMSI {} from its recorded state at {}, goal {}; {} targets follow their recorded tracks in {}.",
@@ -268,6 +305,50 @@ mod tests {
                 target.name
             );
         }
+    }
+
+    #[test]
+    fn the_service_speed_is_the_median_speed_making_way_from_the_start() {
+        let report = |time_s: f64, speed_kn: Option<f64>| crate::log::PositionReport {
+            line: 1,
+            time_unix_s: Some(time_s),
+            lat_deg: 50.0,
+            lon_deg: -1.0,
+            course_deg: Some(90.0),
+            speed_kn,
+            heading_deg: None,
+            navigational_status: None,
+        };
+        let track = VesselTrack {
+            mmsi: 1,
+            reports: [
+                (0.0, Some(20.0)),
+                (10.0, Some(6.7)),
+                (20.0, Some(0.2)),
+                (30.0, None),
+                (40.0, Some(13.0)),
+                (50.0, Some(12.0)),
+            ]
+            .into_iter()
+            .map(|(time_s, speed_kn)| report(time_s, speed_kn))
+            .collect(),
+            ..VesselTrack::default()
+        };
+        // From 10 s: 6.7, 13.0, 12.0 making way (0.2 kn is not; None unknown).
+        assert_eq!(service_speed_kn(&track, 10.0), Some(12.0));
+        assert_eq!(service_speed_kn(&track, 45.0), Some(12.0));
+        assert_eq!(service_speed_kn(&track, 0.0), Some(12.5));
+        assert_eq!(service_speed_kn(&track, 60.0), None);
+        // The replay's ownship sails at the rule's speed, from its start.
+        let log = read_log(LOG);
+        let replay = build_replay(&log, &options()).expect("a replay");
+        let start_s = log
+            .vessels
+            .values()
+            .filter_map(first_time_s)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let expected = service_speed_kn(&log.vessels[&235_000_001], start_s).expect("made way");
+        assert!((replay.scenario.ownship.speed_kn - expected).abs() < 1e-9);
     }
 
     #[test]

@@ -81,8 +81,9 @@ pub(crate) struct Input {
     pub(crate) clock: Clock,
     /// The gap limit, seconds.
     pub(crate) max_gap_s: f64,
-    /// Stretches longer than the gap limit without a fix, bridged by
-    /// straight lines.
+    /// Stretches longer than the gap limit without a fix: bridged by
+    /// straight lines, or dead-reckoned before a target's first fix and
+    /// after its last (decision 48).
     pub(crate) gaps: Vec<Gap>,
     /// Ownship reached its goal if it came this close, metres.
     pub(crate) goal_tolerance_m: f64,
@@ -233,38 +234,31 @@ fn frame_for(
     })
 }
 
-/// The judged interval: ownship's span cut to each target's, the targets
-/// overlapping longest first; a target that would cut it below
-/// [`MIN_INTERVAL_FRACTION`] of ownship's span is left out.
+/// The judged interval and the judged targets (decision 48): ownship's whole
+/// track, and every target observed over at least [`MIN_INTERVAL_FRACTION`]
+/// of it (dead-reckoned where it was not observed, [`resample::sample`]); a
+/// target observed less is left out, said in `left_out`.
 fn interval(
     own: &Prepared,
     targets: &[(usize, Prepared)],
     left_out: &mut Vec<String>,
 ) -> ((f64, f64), Vec<usize>) {
     let (own_from, own_to) = own.span_s();
-    let overlap = |vessel: &Prepared| {
-        let (from, to) = vessel.span_s();
-        own_to.min(to) - own_from.max(from)
-    };
-    let mut candidates: Vec<&(usize, Prepared)> = targets.iter().collect();
-    candidates.sort_by(|a, b| overlap(&b.1).total_cmp(&overlap(&a.1)));
-    let (mut from_s, mut to_s) = (own_from, own_to);
     let mut kept = Vec::new();
-    for (index, vessel) in candidates {
+    for (index, vessel) in targets {
         let (first, last) = vessel.span_s();
-        let (new_from, new_to) = (from_s.max(first), to_s.min(last));
-        if new_to - new_from >= MIN_INTERVAL_FRACTION * (own_to - own_from) && new_to > new_from {
-            (from_s, to_s) = (new_from, new_to);
+        let overlap_s = own_to.min(last) - own_from.max(first);
+        if overlap_s >= MIN_INTERVAL_FRACTION * (own_to - own_from) && overlap_s > 0.0 {
             kept.push(*index);
         } else {
             left_out.push(format!(
-                "{:?}: observed from {first:.0} s to {last:.0} s, too little of ownship's {own_from:.0} s to {own_to:.0} s (judging it would leave less than {:.0} % of ownship's track)",
+                "{:?}: observed from {first:.0} s to {last:.0} s, less than {:.0} % of ownship's {own_from:.0} s to {own_to:.0} s",
                 vessel.name,
                 MIN_INTERVAL_FRACTION * 100.0
             ));
         }
     }
-    ((from_s, to_s), kept)
+    ((own_from, own_to), kept)
 }
 
 /// The scenario's spec of `track` (ownship's when `is_own`).

@@ -113,16 +113,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
         .iter()
         .map(|a| format!("assumed: {a}"))
         .chain(input.left_out.iter().map(|l| format!("not judged: {l}")))
-        .chain(input.gaps.iter().map(|gap| {
-            format!(
-                "gap: {:?} has no fix from {:.0} s to {:.0} s ({:.0} s > {:.0} s), bridged by a straight line",
-                gap.vessel,
-                gap.from_s,
-                gap.to_s,
-                gap.to_s - gap.from_s,
-                input.max_gap_s
-            )
-        }))
+        .chain(input.gaps.iter().map(|gap| gap.describe(input.max_gap_s)))
     {
         let _ = writeln!(text, "  {line}");
     }

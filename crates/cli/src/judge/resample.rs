@@ -1,6 +1,7 @@
-//! Every vessel onto one clock: the judged interval (where ownship and the
-//! targets were all observed), the common time step, linear interpolation
-//! without extrapolation, and the gaps too long to trust. The rules are in
+//! Every vessel onto one clock: the judged interval (ownship's whole track),
+//! the common time step, linear interpolation between fixes, a target
+//! dead-reckoned where it was not observed (before its first fix, after its
+//! last: decision 48), and the gaps too long to trust. The rules are in
 //! `docs/judge.md`, "Resampling".
 
 use crate::error::CliError;
@@ -12,8 +13,8 @@ use vorrt_scenarios::LocalFrame;
 /// The most samples (vessels times clock ticks) the judge resamples to.
 pub(crate) const MAX_SAMPLES: usize = 20_000_000;
 
-/// A target judged with ownship must keep the judged interval at least this
-/// fraction of ownship's own observed span.
+/// A target is judged with ownship when it was observed over at least this
+/// fraction of ownship's span (decision 48).
 pub(crate) const MIN_INTERVAL_FRACTION: f64 = 0.5;
 
 /// One vessel's fixes in the local frame, sorted by time, one per time.
@@ -111,16 +112,38 @@ pub(crate) struct Clock {
     pub(crate) samples: usize,
 }
 
-/// A stretch without fixes longer than the gap limit, bridged by a straight
-/// line.
+/// A stretch without fixes longer than the gap limit: between two fixes,
+/// bridged by a straight line; before a target's first fix or after its
+/// last, dead-reckoned.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub(crate) struct Gap {
     /// The vessel.
     pub(crate) vessel: String,
-    /// The last fix before it, seconds.
+    /// The last fix before it (or the clock's start), seconds.
     pub(crate) from_s: f64,
-    /// The first fix after it, seconds.
+    /// The first fix after it (or the clock's end), seconds.
     pub(crate) to_s: f64,
+    /// Whether the vessel was dead-reckoned over it (a target not observed
+    /// at the start or the end of ownship's track), not bridged.
+    pub(crate) dead_reckoned: bool,
+}
+
+impl Gap {
+    /// The gap for the console and the notes, against the limit `max_gap_s`.
+    pub(crate) fn describe(&self, max_gap_s: f64) -> String {
+        format!(
+            "gap: {:?} has no fix from {:.0} s to {:.0} s ({:.0} s > {max_gap_s:.0} s), {}",
+            self.vessel,
+            self.from_s,
+            self.to_s,
+            self.to_s - self.from_s,
+            if self.dead_reckoned {
+                "dead-reckoned on its nearest fix's course and speed"
+            } else {
+                "bridged by a straight line"
+            }
+        )
+    }
 }
 
 /// The median of the positive steps between fix times of every vessel.
@@ -177,9 +200,14 @@ pub(crate) fn clock(
             #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
             let ticks = ticks as usize;
             #[allow(clippy::cast_precision_loss)]
-            let times = (0..=ticks)
+            let mut times: Vec<f64> = (0..=ticks)
                 .map(|tick| (from_s + tick as f64 * step_s).min(to_s))
                 .collect();
+            // The interval's end is a tick, the last step shorter if need be:
+            // ownship's last fix is judged (decision 48), not cut off.
+            if times.last().is_some_and(|last| to_s - last > 1e-9 * step_s) {
+                times.push(to_s);
+            }
             (times, step_s, true)
         }
     };
@@ -199,8 +227,8 @@ pub(crate) fn clock(
 }
 
 /// Where `time_s` falls among `fix_times_s`: the fix at or before it and the
-/// fraction of the way to the next (0 at or beyond the last fix; the clock
-/// never leaves the vessel's span, so nothing is extrapolated).
+/// fraction of the way to the next (0 at or beyond the last fix, and before
+/// the first: [`sample`] dead-reckons there).
 fn bracket(fix_times_s: &[f64], time_s: f64) -> (usize, usize, f64) {
     let after = fix_times_s.partition_point(|fix_s| *fix_s <= time_s);
     let before = after.saturating_sub(1);
@@ -259,22 +287,31 @@ fn speeds_from_track(times_s: &[f64], positions_m: &[DVec2]) -> Vec<f64> {
         .collect()
 }
 
+/// The speed of fix `index` where the file gives none: from the fix before
+/// to the fix after (one-sided at the ends), metres per second.
+fn fix_speed_mps(vessel: &Prepared, index: usize) -> f64 {
+    let last = vessel.times_s.len().saturating_sub(1);
+    let (a, b) = (index.saturating_sub(1), (index + 1).min(last));
+    let dt = vessel.times_s[b] - vessel.times_s[a];
+    if dt > 0.0 {
+        vessel.positions_m[b].distance(vessel.positions_m[a]) / dt
+    } else {
+        0.0
+    }
+}
+
 /// `vessel` on `clock`: positions and recorded speeds interpolated linearly,
 /// courses along the shorter turn (recorded ones, else the fixes' own, from
 /// the fix before to the fix after); speeds the file does not give are taken
-/// from the resampled track.
+/// from the resampled track. Before its first fix and after its last, the
+/// vessel is dead-reckoned from that fix on its course and speed, as a
+/// replay's recorded target is (`RecordedMotion::state_at`, decisions 40
+/// and 48), so that the human and vorrt are judged among the same targets.
 pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
     let brackets: Vec<(usize, usize, f64)> = clock
         .times_s
         .iter()
         .map(|time_s| bracket(&vessel.times_s, *time_s))
-        .collect();
-    let positions_m: Vec<DVec2> = brackets
-        .iter()
-        .map(|&(a, b, u)| {
-            let (pa, pb) = (vessel.positions_m[a], vessel.positions_m[b]);
-            if u == 0.0 { pa } else { pa + (pb - pa) * u }
-        })
         .collect();
     // Courses the file does not give are the fixes' own (from the fix before
     // to the fix after), turned between fixes like recorded ones: a rate of
@@ -283,6 +320,30 @@ pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
         .courses_rad
         .clone()
         .unwrap_or_else(|| courses_from_track(&vessel.positions_m));
+    let (first_s, last_s) = vessel.span_s();
+    let dead_reckoned = |index: usize, time_s: f64| {
+        let speed_mps = vessel
+            .speeds_mps
+            .as_ref()
+            .map_or_else(|| fix_speed_mps(vessel, index), |speeds| speeds[index]);
+        let (sin, cos) = fix_courses_rad[index].sin_cos();
+        vessel.positions_m[index]
+            + DVec2::new(sin, cos) * (speed_mps * (time_s - vessel.times_s[index]))
+    };
+    let positions_m: Vec<DVec2> = brackets
+        .iter()
+        .zip(&clock.times_s)
+        .map(|(&(a, b, u), &time_s)| {
+            let (pa, pb) = (vessel.positions_m[a], vessel.positions_m[b]);
+            if time_s < first_s || time_s > last_s {
+                dead_reckoned(a, time_s)
+            } else if u == 0.0 {
+                pa
+            } else {
+                pa + (pb - pa) * u
+            }
+        })
+        .collect();
     let courses_rad = brackets
         .iter()
         .map(|&(a, b, u)| {
@@ -314,19 +375,30 @@ pub(crate) fn sample(vessel: &Prepared, clock: &Clock) -> Sampled {
 }
 
 /// The stretches of `vessel` within the judged interval longer than
-/// `max_gap_s` without a fix.
+/// `max_gap_s` without a fix: between fixes, and before its first fix or
+/// after its last (dead-reckoned).
 pub(crate) fn gaps(vessel: &Prepared, clock: &Clock, max_gap_s: f64) -> Vec<Gap> {
-    vessel
-        .times_s
-        .windows(2)
-        .filter(|pair| {
-            pair[1] - pair[0] > max_gap_s && pair[1] > clock.from_s && pair[0] < clock.to_s
-        })
-        .map(|pair| Gap {
-            vessel: vessel.name.clone(),
-            from_s: pair[0],
-            to_s: pair[1],
-        })
+    let gap = |from_s: f64, to_s: f64, dead_reckoned: bool| Gap {
+        vessel: vessel.name.clone(),
+        from_s,
+        to_s,
+        dead_reckoned,
+    };
+    let (first_s, last_s) = vessel.span_s();
+    let before = (first_s - clock.from_s > max_gap_s).then(|| gap(clock.from_s, first_s, true));
+    let after = (clock.to_s - last_s > max_gap_s).then(|| gap(last_s, clock.to_s, true));
+    before
+        .into_iter()
+        .chain(
+            vessel
+                .times_s
+                .windows(2)
+                .filter(|pair| {
+                    pair[1] - pair[0] > max_gap_s && pair[1] > clock.from_s && pair[0] < clock.to_s
+                })
+                .map(|pair| gap(pair[0], pair[1], false)),
+        )
+        .chain(after)
         .collect()
 }
 
@@ -422,5 +494,56 @@ mod tests {
             "{:?}",
             sampled.courses_rad
         );
+    }
+
+    #[test]
+    fn a_target_not_observed_at_the_ends_is_dead_reckoned_and_its_stretch_reported() {
+        // Ownship observed 0-600 s; the target only 100-300 s, moving north
+        // at 2 m/s (recorded 000°, 2 m/s = 3.888 kn): the clock is ownship's,
+        // the target dead-reckoned before 100 s and after 300 s.
+        let own = Prepared::new(&track("own", &[(0.0, 0.0, 0.0), (600.0, 600.0, 0.0)]), None);
+        let mut t = track(
+            "t",
+            &[
+                (100.0, 50.0, 200.0),
+                (200.0, 50.0, 400.0),
+                (300.0, 50.0, 600.0),
+            ],
+        );
+        for fix in &mut t.fixes {
+            fix.course_deg = Some(0.0);
+            fix.speed_kn = Some(units::mps_to_knots(2.0));
+        }
+        let target = Prepared::new(&t, None);
+        let clock = clock(&[&own, &target], own.span_s(), Some(100.0)).unwrap();
+        assert_eq!((clock.from_s, clock.to_s), (0.0, 600.0));
+        // Off the step, ownship's last fix is still a tick (a shorter last step).
+        let odd = super::clock(&[&own, &target], (0.0, 650.0), Some(100.0)).unwrap();
+        assert_eq!(odd.times_s[6..], [600.0, 650.0]);
+        let sampled = sample(&target, &clock);
+        let norths: Vec<f64> = sampled.positions_m.iter().map(|p| p.y).collect();
+        for (north, expected) in norths
+            .iter()
+            .zip([0.0, 200.0, 400.0, 600.0, 800.0, 1000.0, 1200.0])
+        {
+            assert!((north - expected).abs() < 1e-6, "{norths:?}");
+        }
+        // Without recorded speeds, the same from the fixes themselves.
+        let mut bare = t.clone();
+        for fix in &mut bare.fixes {
+            fix.speed_kn = None;
+        }
+        let bare = sample(&Prepared::new(&bare, None), &clock);
+        assert!((bare.positions_m[6].y - 1200.0).abs() < 1e-6);
+        // 300 s to 600 s dead-reckoned is longer than a 120 s gap limit; the
+        // first 100 s is not.
+        let long = gaps(&target, &clock, 120.0);
+        assert_eq!(long.len(), 1, "{long:?}");
+        assert!(long[0].dead_reckoned);
+        assert_eq!((long[0].from_s, long[0].to_s), (300.0, 600.0));
+        // At 50 s: both ends dead-reckoned, and the 100 s between fixes bridged.
+        let short = gaps(&target, &clock, 50.0);
+        assert_eq!(short.iter().filter(|gap| gap.dead_reckoned).count(), 2);
+        assert_eq!(short.len(), 4, "{short:?}");
     }
 }

@@ -283,7 +283,7 @@ impl Leg {
     #[must_use]
     pub fn turn_duration_s(&self) -> f64 {
         if self.speed_change.is_none() {
-            return self.arc_m() / self.speed_mps;
+            return at_one_speed_s(self.arc_m(), self.speed_mps);
         }
         self.time_at_distance(self.arc_m())
     }
@@ -292,7 +292,7 @@ impl Leg {
     #[must_use]
     pub fn straight_duration_s(&self) -> f64 {
         if self.speed_change.is_none() {
-            return self.straight_m / self.speed_mps;
+            return at_one_speed_s(self.straight_m, self.speed_mps);
         }
         self.duration_s() - self.turn_duration_s()
     }
@@ -550,5 +550,16 @@ impl Leg {
     #[must_use]
     pub fn piece_error_m(&self) -> f64 {
         self.chord_error_m() + self.timing_error_m()
+    }
+}
+
+/// Seconds to sail `distance_m` at `speed_mps`: none for no distance, also
+/// at rest (a leg of a stopped ownship that stays stopped: 0/0 would make
+/// every time on it NaN, and `pose_at` panic).
+fn at_one_speed_s(distance_m: f64, speed_mps: f64) -> f64 {
+    if distance_m == 0.0 {
+        0.0
+    } else {
+        distance_m / speed_mps
     }
 }

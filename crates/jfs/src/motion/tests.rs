@@ -182,6 +182,22 @@ fn a_leg_that_stops_ends_at_its_stopping_distance_even_on_the_arc() {
     assert!(stop.pieces(100.0).all(|piece| piece.turning));
 }
 
+#[test]
+#[expect(clippy::float_cmp, reason = "the test pins exact results")]
+fn a_stopped_ownship_that_stays_stopped_has_a_leg_of_no_time_not_nan() {
+    // The evasive fallback's stop (speed factor 0) asked of an ownship
+    // already at rest: no speed change, no length; 0/0 made pose_at panic.
+    let still = Leg {
+        speed_mps: 0.0,
+        ..turn_then_run()
+    }
+    .from_speed(0.0, 0.03);
+    assert_eq!(still.length_m(), 0.0);
+    assert_eq!(still.duration_s(), 0.0);
+    let start = turn_then_run().pose_at(0.0).position_m;
+    assert!(still.pose_at(30.0).position_m.distance(start) < 1e-9);
+}
+
 proptest::proptest! {
     /// Along any leg with a change of speed, the pieces cover the leg in
     /// order, every pose sampled densely lies within the leg's piece error
