@@ -298,6 +298,32 @@ pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) 
     course_change_rad.abs() >= parameters.apparent_turn_rad
 }
 
+/// The fraction of the reference speed by which a reduction of speed is
+/// readily apparent (rules 8(b), 8(e), 16): a speed halved (Woerner 2019;
+/// scenario-based MPC's speed factors 1 and 0.5, Johansen et al. 2016). The
+/// compliance scoring's default
+/// (`ScoringParameters::apparent_speed_reduction_fraction`) and the
+/// prospective check ([`is_readily_apparent_reduction`]) share it.
+pub const APPARENT_SPEED_REDUCTION_FRACTION: f64 = 0.5;
+
+/// Rules 8(b), 8(e), 16: whether sailing at `speed_mps` is a readily
+/// apparent reduction from `reference_speed_mps` (at least
+/// [`APPARENT_SPEED_REDUCTION_FRACTION`] of it shed): an action, as a
+/// readily apparent alteration of course is.
+///
+/// ```
+/// use vorrt_colregs::rules::is_readily_apparent_reduction;
+/// assert!(is_readily_apparent_reduction(2.7, 6.0));
+/// assert!(!is_readily_apparent_reduction(4.0, 6.0));
+/// ```
+#[inline]
+#[must_use]
+pub fn is_readily_apparent_reduction(speed_mps: f64, reference_speed_mps: f64) -> bool {
+    reference_speed_mps > 0.0
+        && reference_speed_mps - speed_mps
+            >= APPARENT_SPEED_REDUCTION_FRACTION * reference_speed_mps
+}
+
 /// Rules 8(a), 16: whether a readily apparent alteration has been eased back,
 /// so that it is no longer held: the course change in the alteration's
 /// direction (`change_toward_rad`: the signed change from

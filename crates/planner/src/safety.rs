@@ -499,6 +499,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         let lookahead_s = self.config.lookahead_s.min(to_goal_s);
         let giving_way = self.acting_for_any(candidate, latches);
         let motion = Self::candidate_motion(candidate);
+        // On a lane crossing a reduction of speed held is a give-way action
+        // (decision 47).
+        let reduction_acts = self.constraint.prefers_speed_changes();
         for (index, track) in self.tracks.iter().enumerate() {
             if !self.may_reach(index) {
                 continue;
@@ -579,6 +582,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                         target_velocity,
                         rules,
                         altered,
+                        reduction_acts,
                     )
                     .map_err(RejectionCause::Colregs)?;
                 }
