@@ -298,25 +298,18 @@ pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) 
     course_change_rad.abs() >= parameters.apparent_turn_rad
 }
 
-/// The fraction of the reference speed by which a reduction of speed is
-/// readily apparent (rules 8(b), 8(e), 16): a speed halved (Woerner 2019;
-/// scenario-based MPC's speed factors 1 and 0.5, Johansen et al. 2016). The
-/// compliance scoring's default
-/// (`ScoringParameters::apparent_speed_reduction_fraction`) and the
-/// prospective check ([`is_readily_apparent_reduction`]) share it.
+/// The fraction of the reference speed whose loss is a readily apparent
+/// reduction (rules 8(b), 8(e), 16): a speed halved (Woerner 2019); the
+/// default of `ScoringParameters::apparent_speed_reduction_fraction`.
 pub const APPARENT_SPEED_REDUCTION_FRACTION: f64 = 0.5;
 
-/// Rules 8(b), 8(e), 16: whether sailing at `speed_mps` is a readily
-/// apparent reduction from `reference_speed_mps` (at least
-/// [`APPARENT_SPEED_REDUCTION_FRACTION`] of it shed): an action, as a
-/// readily apparent alteration of course is.
+/// Whether `speed_mps` is a readily apparent reduction from
+/// `reference_speed_mps` ([`APPARENT_SPEED_REDUCTION_FRACTION`] shed).
 ///
 /// ```
 /// use vorrt_colregs::rules::is_readily_apparent_reduction;
-/// assert!(is_readily_apparent_reduction(2.7, 6.0));
-/// assert!(!is_readily_apparent_reduction(4.0, 6.0));
+/// assert!(is_readily_apparent_reduction(2.7, 6.0) && !is_readily_apparent_reduction(4.0, 6.0));
 /// ```
-#[inline]
 #[must_use]
 pub fn is_readily_apparent_reduction(speed_mps: f64, reference_speed_mps: f64) -> bool {
     reference_speed_mps > 0.0
