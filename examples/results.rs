@@ -58,8 +58,10 @@ column of the table gives the paper's reported minimum CPA. vorrt now passes
 much wider than the paper (and than d_th): its alteration is made early (by
 2.5 nm) and held until the other vessel is past, as evaluators ask (rules 8
 and 16), where the paper's tree turned as late and as little as d_th allowed.
-In the TSS ownship passes astern of every vessel of the stream (rule 15 read
-strictly) instead of threading it at 135 m.
+In the TSS ownship slows on its course, lets the vessels ahead pass and
+crosses square through the gap (rule 10(c), decision 47), compliant with
+rules 15 and 16 toward every vessel of the stream, instead of threading it
+at 135 m.
 
 ## Before and after
 

@@ -426,6 +426,12 @@ pub fn check_alteration(
 ///   [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)) while its
 ///   closest approach is under [`risk_cpa_m`](RuleParameters::risk_cpa_m)
 ///   must be farther than [`give_way_action_range_m`](RuleParameters::give_way_action_range_m).
+///   With `reduction_acts`, a candidate at a readily apparent reduction of
+///   the reference speed ([`rules::is_readily_apparent_reduction`]) is not
+///   holding: the reduction is the action (rules 8(b), 8(e); a lane
+///   crossing holding short of the stream, decision 47). Elsewhere a
+///   reduction shows too slowly over ground to count (a ship sheds half its
+///   speed over minutes, decision 19), and only a turn does.
 /// - **Held** (`AlterationNotHeld`): once it has been made, while the range
 ///   is still closing, the candidate's course stays at least the apparent
 ///   alteration to starboard of the reference, in head-on and crossing (an
@@ -442,11 +448,16 @@ pub fn check_alteration(
 /// let (target, target_velocity) = (DVec2::new(0.0, 3000.0), DVec2::new(0.0, -6.0));
 /// let hold = CandidateMotion::new(DVec2::ZERO, 0.0, 6.0);
 /// // Holding course 3000 m (1.6 nm) from a head-on vessel: late.
-/// assert_eq!(check_action(&latch, &hold, target, target_velocity, &params, 0.0),
+/// assert_eq!(check_action(&latch, &hold, target, target_velocity, &params, 0.0, false),
+///            Err(ManeuverViolation::LateAction));
+/// // Slowed to 45 % on a lane crossing: the reduction is the action.
+/// let slowed = CandidateMotion::new(DVec2::ZERO, 0.0, 2.7);
+/// assert_eq!(check_action(&latch, &slowed, target, target_velocity, &params, 0.0, true), Ok(()));
+/// assert_eq!(check_action(&latch, &slowed, target, target_velocity, &params, 0.0, false),
 ///            Err(ManeuverViolation::LateAction));
 /// // After a 35° alteration, easing back to 10° before passing: not held.
 /// let eased = CandidateMotion::new(DVec2::ZERO, 10f64.to_radians(), 6.0);
-/// assert_eq!(check_action(&latch, &eased, target, target_velocity, &params, 35f64.to_radians()),
+/// assert_eq!(check_action(&latch, &eased, target, target_velocity, &params, 35f64.to_radians(), false),
 ///            Err(ManeuverViolation::AlterationNotHeld));
 /// ```
 ///
@@ -459,6 +470,7 @@ pub fn check_action(
     target_velocity_mps: DVec2,
     parameters: &RuleParameters,
     altered_rad: f64,
+    reduction_acts: bool,
 ) -> Result<(), ManeuverViolation> {
     let keeps_clear = matches!(
         latch.encounter,
@@ -472,7 +484,13 @@ pub fn check_action(
     let closing = offset.dot(relative_velocity) > 0.0;
     let turn = angle::signed_turn(latch.reference_course_rad, own.course_rad);
     if altered_rad < parameters.apparent_turn_rad {
-        let holding = turn.abs() <= parameters.turn_tolerance_rad;
+        // Where a reduction of speed counts, one readily apparent and held
+        // is the action too (rules 8(b), 8(e), 16): a vessel holding short
+        // of a lane's stream slows on its course rather than turning
+        // (decision 47).
+        let holding = turn.abs() <= parameters.turn_tolerance_rad
+            && !(reduction_acts
+                && rules::is_readily_apparent_reduction(own.speed_mps, latch.reference_speed_mps));
         if holding && closing && offset.length() < parameters.give_way_action_range_m {
             let cpa = vorrt_geometry::cpa::cpa_clamped(
                 own.position_m - target_position_m,

@@ -300,6 +300,25 @@ pub fn is_readily_apparent(course_change_rad: f64, parameters: &RuleParameters) 
     course_change_rad.abs() >= parameters.apparent_turn_rad
 }
 
+/// The fraction of the reference speed whose loss is a readily apparent
+/// reduction (rules 8(b), 8(e), 16): a speed halved (Woerner 2019); the
+/// default of `ScoringParameters::apparent_speed_reduction_fraction`.
+pub const APPARENT_SPEED_REDUCTION_FRACTION: f64 = 0.5;
+
+/// Whether `speed_mps` is a readily apparent reduction from
+/// `reference_speed_mps` ([`APPARENT_SPEED_REDUCTION_FRACTION`] shed).
+///
+/// ```
+/// use vorrt_colregs::rules::is_readily_apparent_reduction;
+/// assert!(is_readily_apparent_reduction(2.7, 6.0) && !is_readily_apparent_reduction(4.0, 6.0));
+/// ```
+#[must_use]
+pub fn is_readily_apparent_reduction(speed_mps: f64, reference_speed_mps: f64) -> bool {
+    reference_speed_mps > 0.0
+        && reference_speed_mps - speed_mps
+            >= APPARENT_SPEED_REDUCTION_FRACTION * reference_speed_mps
+}
+
 /// Rules 8(a), 16: whether a readily apparent alteration has been eased back,
 /// so that it is no longer held: the course change in the alteration's
 /// direction (`change_toward_rad`: the signed change from

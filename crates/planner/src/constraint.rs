@@ -206,7 +206,9 @@ pub trait Constraint {
     /// course to the goal before any alteration of course
     /// ([`ManeuverShape::SpeedOnCourse`](crate::vorrt::ManeuverShape::SpeedOnCourse)):
     /// a route that crosses a traffic lane, whose heading rule 10(c) fixes.
-    /// The default is no.
+    /// Then a readily apparent reduction of speed held also counts as a
+    /// give-way action (`vorrt_colregs::check_action`: holding short of the
+    /// stream, decision 47). The default is no.
     fn prefers_speed_changes(&self) -> bool {
         false
     }

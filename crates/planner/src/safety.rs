@@ -576,21 +576,37 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 )
                 .map_err(RejectionCause::Colregs)?;
                 if self.config.compliance == Compliance::Full {
-                    check_alteration(&latch, altered, candidate.course_rad, rules)
+                    self.check_give_way(&latch, &motion, target_position, target_velocity, altered)
                         .map_err(RejectionCause::Colregs)?;
-                    check_action(
-                        &latch,
-                        &motion,
-                        target_position,
-                        target_velocity,
-                        rules,
-                        altered,
-                    )
-                    .map_err(RejectionCause::Colregs)?;
                 }
             }
         }
         Ok(())
+    }
+
+    /// A give-way vessel's alteration is readily apparent, early and held
+    /// (rules 8, 16: `check_alteration`, `check_action`); on a route that
+    /// crosses a lane a reduction of speed held is an action too
+    /// ([`Constraint::prefers_speed_changes`], decision 47).
+    fn check_give_way(
+        &self,
+        latch: &EncounterLatch,
+        motion: &CandidateMotion,
+        target_position_m: DVec2,
+        target_velocity_mps: DVec2,
+        altered_rad: f64,
+    ) -> Result<(), ManeuverViolation> {
+        let rules = &self.config.rules;
+        check_alteration(latch, altered_rad, motion.course_rad, rules)?;
+        check_action(
+            latch,
+            motion,
+            target_position_m,
+            target_velocity_mps,
+            rules,
+            altered_rad,
+            self.constraint.prefers_speed_changes(),
+        )
     }
 }
 

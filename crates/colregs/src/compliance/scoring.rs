@@ -127,7 +127,7 @@ impl Default for ScoringParameters {
             reaction_time_s: 60.0,
             action_detection_rad: 5f64.to_radians(),
             action_speed_drop_fraction: 0.2,
-            apparent_speed_reduction_fraction: 0.5,
+            apparent_speed_reduction_fraction: crate::rules::APPARENT_SPEED_REDUCTION_FRACTION,
             crossed_ahead_range_m: 1852.0,
             penalties: PenaltyWeights::default(),
         }
