@@ -33,10 +33,10 @@ fn times_s() -> Vec<f64> {
 fn ownship() -> RecordedTrack {
     let mut position_m = DVec2::ZERO;
     let mut course_rad: f64 = 0.0;
-    let (mut positions_m, mut courses_rad) = (Vec::new(), Vec::new());
+    let (mut track_m, mut headings_rad) = (Vec::new(), Vec::new());
     for time_s in times_s() {
-        positions_m.push(position_m);
-        courses_rad.push(course_rad);
+        track_m.push(position_m);
+        headings_rad.push(course_rad);
         let command_rad = if time_s >= ALTER_AT_S {
             35f64.to_radians()
         } else {
@@ -50,8 +50,8 @@ fn ownship() -> RecordedTrack {
     RecordedTrack {
         name: "ownship".into(),
         length_m: 100.0,
-        positions_m,
-        courses_rad: Some(courses_rad),
+        positions_m: track_m,
+        courses_rad: Some(headings_rad),
         observation: TrackObservation::default(),
     }
 }
