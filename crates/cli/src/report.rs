@@ -8,6 +8,7 @@
 //! positions `east`/`north` metres in the scenario's frame.
 
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::StandOnDeparture;
 use vorrt_geometry::units;
 use vorrt_planner::{Plan, PlanStatistics, RejectionCounts, Waypoint};
 use vorrt_scenarios::{
@@ -324,6 +325,61 @@ pub struct TargetReport {
     /// Largest observed course change before the closest approach, degrees,
     /// positive to starboard (`null`: no encounter).
     pub max_alteration_deg: Option<f64>,
+    /// Standing on, the departures from the course or speed to keep while
+    /// this vessel was beyond the stand-on action range: the first justified
+    /// by each other vessel whose duty took precedence, and the first
+    /// unjustified one (a finding); empty when course and speed were kept
+    /// (decision 45).
+    #[serde(default)]
+    pub stand_on_departures: Vec<StandOnDepartureReport>,
+}
+
+/// A stand-on departure before the action range, and the duty toward
+/// another vessel that took precedence, if one did.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StandOnDepartureReport {
+    /// When ownship was first seen off its course or speed, seconds.
+    pub time_s: f64,
+    /// The range to this vessel then, metres.
+    pub range_m: f64,
+    /// The course change from the course to keep, degrees, positive to
+    /// starboard.
+    pub course_change_deg: f64,
+    /// The speed change from the reference speed, m/s (negative: slower).
+    pub speed_change_mps: f64,
+    /// Whether a duty toward another vessel justified it (no finding).
+    pub justified: bool,
+    /// The duty that took precedence: `keep_out_of_the_way` (rules 16,
+    /// 2(b)) or `stand_on_may_act` (17(a)(ii), 2(b)); `null` when none did.
+    pub precedence: Option<String>,
+    /// The rules that let it take precedence over rule 17(a)(i).
+    pub rule: Option<String>,
+    /// The other vessel's name.
+    pub other_vessel: Option<String>,
+    /// Ownship's encounter with the other vessel (`crossing_give_way`, ...).
+    pub other_encounter: Option<String>,
+    /// The range to the other vessel then, metres.
+    pub other_range_m: Option<f64>,
+}
+
+impl StandOnDepartureReport {
+    /// The report of one departure.
+    #[must_use]
+    pub fn new(departure: &StandOnDeparture) -> Self {
+        let precedence = departure.precedence.as_ref();
+        Self {
+            time_s: departure.time_s,
+            range_m: departure.range_m,
+            course_change_deg: departure.course_change_rad.to_degrees(),
+            speed_change_mps: departure.speed_change_mps,
+            justified: precedence.is_some(),
+            precedence: precedence.map(|p| p.duty.name().to_owned()),
+            rule: precedence.map(|p| p.rule.clone()),
+            other_vessel: precedence.map(|p| p.vessel_name.clone()),
+            other_encounter: precedence.map(|p| p.encounter.name().to_owned()),
+            other_range_m: precedence.map(|p| p.range_m),
+        }
+    }
 }
 
 impl Report {
@@ -401,6 +457,12 @@ impl TargetReport {
             action_range_m: target.action_range_m,
             first_alteration_deg: target.first_alteration_deg,
             max_alteration_deg: target.max_alteration_deg,
+            stand_on_departures: target
+                .assessment
+                .iter()
+                .flat_map(|a| &a.stand_on_departures)
+                .map(StandOnDepartureReport::new)
+                .collect(),
         }
     }
 }

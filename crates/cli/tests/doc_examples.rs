@@ -366,3 +366,47 @@ fn batch_outputs_fields_and_examples_match_a_run() {
         "run.json",
     );
 }
+
+/// Decision 45: on Imazu problem 16 ownship departs from its stand-on course
+/// for TS1 while it gives way to another vessel; each entry of
+/// `targets[].stand_on_departures` has exactly the fields the doc's
+/// "Stand-on departures" section names, and the duty is named.
+#[test]
+fn stand_on_departure_fields_match_a_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("imazu_16");
+    vorrt(&[
+        "simulate",
+        "crates/scenarios/fixtures/imazu/imazu_16.ron",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let report = read_json(&out.join("report.json"));
+    let departures: Vec<&Value> = report["targets"]
+        .as_array()
+        .expect("targets")
+        .iter()
+        .flat_map(|target| {
+            target["stand_on_departures"]
+                .as_array()
+                .into_iter()
+                .flatten()
+        })
+        .collect();
+    let justified = departures
+        .iter()
+        .find(|d| d["justified"] == Value::Bool(true))
+        .expect("a justified stand-on departure on imazu_16");
+    assert_eq!(
+        justified["precedence"], "keep_out_of_the_way",
+        "{justified}"
+    );
+    assert_eq!(justified["rule"], "16, 2(b)", "{justified}");
+    let mut real = BTreeSet::new();
+    field_paths(justified, "", &mut real);
+    assert_same_fields(
+        &real,
+        &documented_fields(section(&doc(), "Stand-on departures")),
+        "targets[].stand_on_departures[]",
+    );
+}

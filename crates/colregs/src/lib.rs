@@ -16,8 +16,9 @@ pub mod rules;
 pub mod vessel;
 
 pub use compliance::{
-    ComplianceViolation, EncounterAssessment, EncounterSample, PenaltyWeights, RuleScores,
-    ScoringParameters, assess_encounter, assess_encounter_acting, first_latch, safety_score,
+    ComplianceViolation, Duty, EncounterAssessment, EncounterSample, OtherDuty, PenaltyWeights,
+    Precedence, RuleScores, ScoringParameters, StandOnDeparture, assess_encounter,
+    assess_encounter_acting, first_latch, safety_score,
 };
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;

@@ -9,7 +9,9 @@ use vorrt_colregs::compliance::{
     first_latch, safety_score,
 };
 use vorrt_colregs::rules::in_contact;
-use vorrt_colregs::{Encounter, EncounterLatch, PassingSide, Role, RuleParameters, VesselState};
+use vorrt_colregs::{
+    Duty, Encounter, EncounterLatch, OtherDuty, PassingSide, Role, RuleParameters, VesselState,
+};
 
 /// One leg of a plan: from `from_s` on, steer `course_deg` at `speed_mps`.
 #[derive(Clone, Copy, Debug)]
@@ -535,9 +537,16 @@ fn stand_on_keeps_the_course_taken_while_giving_way_to_another() {
             1800.0,
             5.0,
         );
-        let giving_way: Vec<bool> = samples
+        let giving_way: Vec<Option<OtherDuty>> = samples
             .iter()
-            .map(|s| (60.0..=150.0).contains(&s.time_s))
+            .map(|s| {
+                (60.0..=150.0).contains(&s.time_s).then_some(OtherDuty {
+                    vessel: 1,
+                    encounter: Encounter::CrossingGiveWay,
+                    duty: Duty::KeepOutOfTheWay,
+                    range_m: 5000.0,
+                })
+            })
             .collect();
         let latch = first_latch(&samples, &rules).expect("risk of collision arises");
         assert_eq!(latch.encounter, Encounter::CrossingStandOn);

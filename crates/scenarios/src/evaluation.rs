@@ -25,6 +25,9 @@
 //! (rule 17(a)(ii)): an early course or speed change is not held against it,
 //! a port turn for a vessel on its port side still is (rule 17(c)). The
 //! planner applies the same reading (`vorrt_colregs::check_maneuver_acting`).
+//! Each such departure before the action range is listed on the assessment
+//! with the duty that took precedence, the other vessel and the rule
+//! (`EncounterAssessment::stand_on_departures`, decision 45).
 
 use crate::chart::Chart;
 use crate::scenario::Scenario;

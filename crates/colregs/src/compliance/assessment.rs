@@ -1,6 +1,6 @@
 //! What an assessment reports: the measurements, the findings and the scores.
 
-use super::ComplianceViolation;
+use super::{ComplianceViolation, StandOnDeparture};
 use crate::encounter::{Encounter, Role};
 use crate::passing::PassingSide;
 use serde::{Deserialize, Serialize};
@@ -93,6 +93,13 @@ pub struct EncounterAssessment {
     pub crossed_ahead_distance_m: Option<f64>,
     /// Every finding, safety findings first.
     pub violations: Vec<ComplianceViolation>,
+    /// Standing on, the departures from the course or speed to keep while
+    /// the give-way vessel was beyond the stand-on action range: the first
+    /// justified by each other vessel's duty, which took precedence (rules
+    /// 2(b), 16, 17(a)(ii); no finding), and the first unjustified one (a
+    /// finding). Empty when the course and speed were kept (decision 45).
+    #[serde(default)]
+    pub stand_on_departures: Vec<StandOnDeparture>,
     /// The scores.
     pub scores: RuleScores,
     /// Whether the minimum range stayed at or above the clearance.

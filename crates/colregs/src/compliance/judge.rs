@@ -2,7 +2,8 @@
 //! findings and setting the scores of the rules it judges (see the violation
 //! list in the [module documentation](super)).
 
-use super::measure::{EasedBack, Measurements, largest_signed, speed_change_of, turn_of};
+use super::measure::{EasedBack, Measurements, largest_signed, turn_of};
+use super::precedence::{OtherDuty, Precedence, StandOnDeparture};
 use super::{ComplianceViolation, EncounterSample, ScoringParameters};
 use crate::encounter::Encounter;
 use crate::encounter::Role;
@@ -12,7 +13,7 @@ use crate::passing::PassingSide;
 use crate::rules::{
     STEADY_COURSE_WINDOW_S, course_change_rad, is_measured_readily_apparent, is_on_port_side,
     is_port_turn, is_port_turn_toward_vessel, is_speed_change, is_stand_on_course_change,
-    steady_course_rad,
+    steady_course_rad, within_action_range,
 };
 
 /// The findings and rule scores built up by the judgement steps.
@@ -30,6 +31,9 @@ pub(super) struct Findings {
     pub(super) rule_16: Option<f64>,
     /// Rule 17's score, when judged.
     pub(super) rule_17: Option<f64>,
+    /// The stand-on departures before the action range, justified or not
+    /// (decision 45).
+    pub(super) stand_on_departures: Vec<StandOnDeparture>,
 }
 
 /// `1 - Σ penalties`, clamped to `[0, 1]`.
@@ -223,7 +227,10 @@ impl Findings {
     /// Rule 17: a stand-on vessel keeps course and speed while it may not act
     /// (17(a)(i); `may_act` says when it may, see
     /// [`may_act`](crate::rules::may_act)), and in a crossing does not turn
-    /// to port for a vessel on its own port side (17(c)).
+    /// to port for a vessel on its own port side (17(c)). `duty` gives, at a
+    /// sample, the duty toward another vessel that frees ownship to act
+    /// then (decision 45): the departures it explains are recorded with it
+    /// as justified, the others are findings.
     pub(super) fn judge_stand_on(
         &mut self,
         in_force: &[EncounterSample],
@@ -231,24 +238,44 @@ impl Findings {
         rules: &RuleParameters,
         scoring: &ScoringParameters,
         may_act: impl Fn(&EncounterSample) -> bool,
-        giving_way: impl Fn(&EncounterSample) -> bool,
+        duty: impl Fn(&EncounterSample) -> Option<OtherDuty>,
     ) {
         let weights = &scoring.penalties;
         let mut penalties = Vec::new();
-        let early = || in_force.iter().filter(|s| !may_act(s));
-        // The course to keep: the reference, or the one last taken while
-        // giving way to another vessel (rules::alteration_made, as the
-        // planner carries it).
-        let mut kept_course_rad = latch.reference_course_rad;
-        let early_turn = largest_signed(in_force.iter().filter_map(|s| {
-            if giving_way(s) {
-                kept_course_rad = s.own.course_rad;
-                None
-            } else {
-                (!may_act(s)).then(|| course_change_rad(kept_course_rad, s.own.course_rad))
+        // The course and speed to keep: the reference, or those last taken
+        // while a duty toward another vessel was in force (rule 17(a)(i)
+        // read with decision 22: once free of that duty, the course and
+        // speed ownship then has; rules::alteration_made carries the course
+        // for the planner). A departure while a duty frees ownship is
+        // measured from what was kept when that duty began (decision 45).
+        let mut kept = Kept {
+            course_rad: latch.reference_course_rad,
+            speed_mps: latch.reference_speed_mps,
+        };
+        let mut duty_began_on = None;
+        let (mut early_turns, mut early_speeds) = (Vec::new(), Vec::new());
+        for s in in_force {
+            let Some(other) = duty(s) else {
+                duty_began_on = None;
+                if !may_act(s) {
+                    let change = kept.change_to(s);
+                    self.note_departure(s, change, rules, None);
+                    early_turns.push(change.course_rad);
+                    early_speeds.push(change.speed_mps);
+                }
+                continue;
+            };
+            let began_on = *duty_began_on.get_or_insert(kept);
+            if !within_action_range(s.range_m(), rules) {
+                self.note_departure(s, began_on.change_to(s), rules, Some(&other));
             }
-        }));
-        let early_speed = largest_signed(early().map(|s| speed_change_of(latch, s)));
+            kept = Kept {
+                course_rad: s.own.course_rad,
+                speed_mps: s.own.speed_mps,
+            };
+        }
+        let early_turn = largest_signed(early_turns.into_iter());
+        let early_speed = largest_signed(early_speeds.into_iter());
         if is_stand_on_course_change(early_turn, rules) {
             self.violations
                 .push(ComplianceViolation::StandOnCourseChanged {
@@ -273,6 +300,56 @@ impl Findings {
             penalties.push(weights.stand_on_port_turn);
         }
         self.rule_17 = Some(rule_score(&penalties));
+    }
+}
+
+impl Findings {
+    /// Records a stand-on departure at `s` (`change` from what was to be
+    /// kept beyond the tolerances), once per duty that justified one (and
+    /// once for the unjustified), so that the report names every vessel
+    /// whose duty took precedence (decision 45).
+    fn note_departure(
+        &mut self,
+        s: &EncounterSample,
+        change: Kept,
+        rules: &RuleParameters,
+        other: Option<&OtherDuty>,
+    ) {
+        let departed = is_stand_on_course_change(change.course_rad, rules)
+            || is_speed_change(change.speed_mps, rules);
+        let vessel = other.map(|other| other.vessel);
+        let noted = self
+            .stand_on_departures
+            .iter()
+            .any(|d| d.precedence.as_ref().map(|p| p.vessel) == vessel);
+        if departed && !noted {
+            self.stand_on_departures.push(StandOnDeparture {
+                time_s: s.time_s,
+                range_m: s.range_m(),
+                course_change_rad: change.course_rad,
+                speed_change_mps: change.speed_mps,
+                precedence: other.map(Precedence::of),
+            });
+        }
+    }
+}
+
+/// A stand-on vessel's course and speed to keep (or a change from them).
+#[derive(Debug, Clone, Copy)]
+struct Kept {
+    /// Course, radians (a change: positive to starboard).
+    course_rad: f64,
+    /// Speed, m/s (a change: negative = slower).
+    speed_mps: f64,
+}
+
+impl Kept {
+    /// The change from these to ownship's course and speed at `s`.
+    fn change_to(self, s: &EncounterSample) -> Self {
+        Self {
+            course_rad: course_change_rad(self.course_rad, s.own.course_rad),
+            speed_mps: s.own.speed_mps - self.speed_mps,
+        }
     }
 }
 

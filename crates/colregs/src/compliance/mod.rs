@@ -105,7 +105,14 @@
 //!     or speed by more than
 //!     [`stand_on_speed_tolerance_mps`](RuleParameters::stand_on_speed_tolerance_mps)
 //!     while the range was still over
-//!     [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m).
+//!     [`stand_on_action_range_m`](RuleParameters::stand_on_action_range_m)
+//!     and no duty toward another vessel freed ownship to act: the course
+//!     and speed to keep are the reference ones, or those last had while
+//!     such a duty was in force (decisions 22, 45). Every departure before
+//!     the action range is listed in
+//!     [`stand_on_departures`](EncounterAssessment::stand_on_departures),
+//!     with the duty that took precedence where one did
+//!     ([`Precedence`]: rules 16 and 2(b), or 17(a)(ii)).
 //!   - [`StandOnTurnedToPort`](ComplianceViolation::StandOnTurnedToPort)
 //!     (rule 17(c), crossing only): at its first detectable port turn ownship
 //!     had the target on its port side (relative to the reference course).
@@ -139,6 +146,7 @@ mod assessment;
 pub(crate) mod episodes;
 mod judge;
 pub(crate) mod measure;
+mod precedence;
 mod recording;
 mod scoring;
 #[cfg(test)]
@@ -146,6 +154,7 @@ mod tests;
 mod violation;
 
 pub use assessment::{EncounterAssessment, RuleScores};
+pub use precedence::{Duty, OtherDuty, Precedence, StandOnDeparture};
 pub use recording::{EncounterSample, first_latch, steady_courses_rad};
 pub use scoring::{PenaltyWeights, ScoringParameters, safety_score};
 pub use violation::ComplianceViolation;
@@ -200,19 +209,22 @@ pub fn assess_encounter(
     assess_encounter_acting(samples, latch, rules, scoring, &[])
 }
 
-/// As [`assess_encounter`], for a stand-on ownship that also had to give way
-/// to other vessels: `giving_way[i]` says whether it did at `samples[i]`
-/// (missing entries count as `false`). With several targets, rule 17 yields
-/// to the duty to keep out of the way (the planner reads it the same way), so
-/// while it gives way an early course or speed change is not held against
-/// it; rule 17(c) still is.
+/// As [`assess_encounter`], for a stand-on ownship that also had duties
+/// toward other vessels: `duties[i]` is the duty that took precedence at
+/// `samples[i]` ([`OtherDuty::precedent`]; missing entries count as none):
+/// it gave way to another vessel, or stood on for one within the action
+/// range. With several targets, rule 17 yields to such a duty (rule 2(b);
+/// the planner reads it the same way, [`rules::may_act`]), so while it is in
+/// force an early course or speed change is not held against ownship but
+/// recorded with the duty ([`EncounterAssessment::stand_on_departures`],
+/// decision 45); rule 17(c) still is.
 #[must_use]
 pub fn assess_encounter_acting(
     samples: &[EncounterSample],
     latch: &EncounterLatch,
     rules: &RuleParameters,
     scoring: &ScoringParameters,
-    giving_way: &[bool],
+    duties: &[Option<OtherDuty>],
 ) -> EncounterAssessment {
     let window = InForce::of(samples, latch, rules);
     let measured = Measurements::of(samples, &window, latch, rules, scoring);
@@ -223,26 +235,17 @@ pub fn assess_encounter_acting(
             findings.judge_manner_of_giving_way(&measured, latch.encounter, rules, scoring);
         }
         Role::StandOn => {
-            let giving_way_at = giving_way_at(samples, giving_way);
-            let may_act = {
-                let giving_way_at = giving_way_at.clone();
-                let rules = *rules;
-                move |s: &EncounterSample| {
-                    rules::may_act(
-                        s.range_m(),
-                        giving_way_at.contains(&s.time_s.to_bits()),
-                        &rules,
-                    )
-                }
-            };
-            let giving = move |s: &EncounterSample| giving_way_at.contains(&s.time_s.to_bits());
+            let duty_at = duty_at(samples, duties);
+            let duty = |s: &EncounterSample| duty_at.get(&s.time_s.to_bits()).copied();
+            let may_act =
+                |s: &EncounterSample| rules::may_act(s.range_m(), duty(s).is_some(), rules);
             findings.judge_stand_on(
                 window.samples(samples),
                 latch,
                 rules,
                 scoring,
                 may_act,
-                giving,
+                duty,
             );
         }
         Role::None => {}
@@ -252,17 +255,16 @@ pub fn assess_encounter_acting(
     assemble(latch, &measured, findings, passed_at_s, scoring)
 }
 
-/// The times (as bits) of the samples at which ownship gave way to another
-/// vessel: then, standing on, it may act ([`rules::may_act`]).
-fn giving_way_at(
+/// The duty toward another vessel in force at each sample (keyed by the
+/// time's bits): then, standing on, ownship may act ([`rules::may_act`]).
+fn duty_at(
     samples: &[EncounterSample],
-    giving_way: &[bool],
-) -> std::collections::HashSet<u64> {
+    duties: &[Option<OtherDuty>],
+) -> std::collections::HashMap<u64, OtherDuty> {
     samples
         .iter()
-        .zip(giving_way)
-        .filter(|(_, giving)| **giving)
-        .map(|(sample, _)| sample.time_s.to_bits())
+        .zip(duties)
+        .filter_map(|(sample, duty)| duty.map(|duty| (sample.time_s.to_bits(), duty)))
         .collect()
 }
 
@@ -287,6 +289,7 @@ fn assemble(
         rule_15,
         rule_16,
         rule_17,
+        stand_on_departures,
     } = findings;
     let overall = [rule_13, rule_14, rule_15, rule_16, rule_17]
         .into_iter()
@@ -312,6 +315,7 @@ fn assemble(
         crossed_ahead: measured.crossed_ahead_distance_m.is_some(),
         crossed_ahead_distance_m: measured.crossed_ahead_distance_m,
         violations,
+        stand_on_departures,
         scores: RuleScores {
             safety,
             rule_13,

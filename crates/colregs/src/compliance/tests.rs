@@ -276,3 +276,54 @@ fn stand_on_port_turn_is_judged_in_crossings_only() {
     assert!(judged(Encounter::CrossingStandOn));
     assert!(!judged(Encounter::BeingOvertaken));
 }
+
+/// Decision 45: overtaken from 4.3 nm astern, ownship slows from 6 to 3 m/s
+/// while it keeps out of the way of another vessel (vessel 1, the first five
+/// minutes), then holds 3 m/s. The slowing is justified and named; the
+/// speed held afterwards is the speed to keep, no finding. Without the duty
+/// the same slowing is a finding.
+#[test]
+fn the_speed_taken_while_giving_way_to_another_is_the_speed_to_keep() {
+    let rules = RuleParameters::default();
+    let target = VesselState::new(DVec2::new(20.0, -8000.0), 0.0, 9.0, 50.0);
+    let mut own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let mut target_now = target;
+    let (mut samples, mut duties) = (Vec::new(), Vec::new());
+    for step in 0..=120 {
+        let time_s = f64::from(step) * 5.0;
+        own.speed_mps = (6.0 - 0.05 * time_s).max(3.0);
+        samples.push(EncounterSample::new(time_s, own, target_now));
+        duties.push((time_s <= 300.0).then_some(OtherDuty {
+            vessel: 1,
+            encounter: Encounter::CrossingGiveWay,
+            duty: Duty::KeepOutOfTheWay,
+            range_m: 5000.0,
+        }));
+        own = own.advanced(5.0);
+        target_now = target_now.advanced(5.0);
+    }
+    let latch = first_latch(&samples, &rules).expect("risk");
+    assert_eq!(latch.encounter, Encounter::BeingOvertaken);
+    let scoring = ScoringParameters::default();
+    let a = assess_encounter_acting(&samples, &latch, &rules, &scoring, &duties);
+    assert!(a.compliant, "{:?}", a.violations);
+    let [departure] = a.stand_on_departures.as_slice() else {
+        panic!("one departure: {:?}", a.stand_on_departures);
+    };
+    let precedence = departure.precedence.as_ref().expect("justified");
+    assert_eq!(
+        (precedence.duty, precedence.vessel),
+        (Duty::KeepOutOfTheWay, 1)
+    );
+    assert!(departure.speed_change_mps < -1.0, "{departure:?}");
+    let alone = assess_encounter_acting(&samples, &latch, &rules, &scoring, &[]);
+    assert!(
+        alone
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::StandOnSpeedChanged { .. })),
+        "{:?}",
+        alone.violations
+    );
+    assert!(alone.stand_on_departures[0].precedence.is_none());
+}

@@ -9,12 +9,11 @@ use super::status::NavigationalStatus;
 use super::{ObservedParameters, RecordedTrack, Recording};
 use crate::compliance::measure::closest_approach;
 use crate::compliance::{
-    ComplianceViolation, EncounterAssessment, EncounterSample, assess_encounter_acting,
-    first_latch, safety_score, steady_courses_rad,
+    ComplianceViolation, Duty, EncounterAssessment, EncounterSample, OtherDuty,
+    assess_encounter_acting, first_latch, safety_score, steady_courses_rad,
 };
 use crate::error::ColregsError;
 use crate::latch::{EncounterLatch, update_latch_steady};
-use crate::rules::acting_for_any;
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -180,12 +179,24 @@ pub fn judge(
                 .collect()
         })
         .collect();
-    let giving_way = giving_way_at(&samples, &recording.targets, &own_parameters);
+    let duties = duties_at(&samples, &recording.targets, &own_parameters);
+    let names: Vec<&str> = recording.targets.iter().map(|t| t.name.as_str()).collect();
     let targets: Vec<ObservedEncounter> = recording
         .targets
         .iter()
         .zip(&samples)
-        .map(|(track, samples)| judge_target(track, samples, &giving_way, &own_parameters))
+        .enumerate()
+        .map(|(index, (track, samples))| {
+            // The duties toward the other vessels: a vessel's own encounter
+            // is judged by its own rule, not excused by itself.
+            let others: Vec<Option<OtherDuty>> = duties
+                .iter()
+                .map(|at| OtherDuty::precedent(at.iter().filter(|d| d.vessel != index)))
+                .collect();
+            let mut judged = judge_target(track, samples, &others, &own_parameters);
+            name_departures(&mut judged, &names);
+            judged
+        })
         .collect();
     let compliant = track_findings.is_empty() && targets.iter().all(|target| target.compliant);
     Ok(ObservedJudgement {
@@ -300,27 +311,34 @@ fn observed_states(track: &RecordedTrack, observed: &[OverGround]) -> Vec<Vessel
         .collect()
 }
 
-/// At each sample, whether ownship acted for some target then (an encounter
+/// At each sample, ownship's duties toward the targets then (an encounter
 /// in force, latched on the observed states, in which it gives way, or
-/// stands on within the action range: [`acting_for_any`]): while it does, it
-/// may act for the vessels it stands on for ([`crate::rules::may_act`]).
-fn giving_way_at(
+/// stands on within the action range: [`Duty::of`], the reading of
+/// [`acting_for_any`](crate::rules::acting_for_any)): while it has one
+/// toward another vessel, it may act for the vessels it stands on for
+/// ([`crate::rules::may_act`]; decision 45 names it). A duty is carried one
+/// observation window (`window_s`) past its end: the observed COG shows a
+/// turn made under it that much later (decision 45).
+fn duties_at(
     samples: &[Vec<EncounterSample>],
     tracks: &[RecordedTrack],
     parameters: &ObservedParameters,
-) -> Vec<bool> {
+) -> Vec<Vec<OtherDuty>> {
     let count = samples.first().map_or(0, Vec::len);
-    let mut giving_way = vec![false; count];
+    let mut duties = vec![Vec::new(); count];
     let steady = samples.first().map(|track| steady_courses_rad(track));
-    for (track, _) in samples
+    for (vessel, (track, _)) in samples
         .iter()
         .zip(tracks)
-        .filter(|(_, recorded)| !at_rest(recorded))
+        .enumerate()
+        .filter(|(_, (_, recorded))| !at_rest(recorded))
     {
         let mut latch = None;
-        for ((sample, giving), steady_course_rad) in track
+        let mut last: Option<OtherDuty> = None;
+        let mut last_at_s = f64::NEG_INFINITY;
+        for ((sample, at), steady_course_rad) in track
             .iter()
-            .zip(giving_way.iter_mut())
+            .zip(duties.iter_mut())
             .zip(steady.iter().flatten())
         {
             latch = update_latch_steady(
@@ -331,12 +349,40 @@ fn giving_way_at(
                 sample.time_s,
                 &parameters.rules,
             );
-            *giving |= latch.is_some_and(|latch| {
-                acting_for_any([(&latch, sample.range_m())], &parameters.rules)
+            let range_m = sample.range_m();
+            let now = latch.and_then(|latch| {
+                Duty::of(&latch, range_m, &parameters.rules).map(|duty| OtherDuty {
+                    vessel,
+                    encounter: latch.encounter,
+                    duty,
+                    range_m,
+                })
             });
+            if now.is_some() {
+                (last, last_at_s) = (now, sample.time_s);
+            }
+            let shown = now.or_else(|| {
+                last.filter(|_| sample.time_s - last_at_s <= parameters.window_s)
+                    .map(|duty| OtherDuty { range_m, ..duty })
+            });
+            at.extend(shown);
         }
     }
-    giving_way
+    duties
+}
+
+/// Names the other vessels of a judged encounter's justified stand-on
+/// departures.
+fn name_departures(judged: &mut ObservedEncounter, names: &[&str]) {
+    let departures = judged
+        .assessment
+        .iter_mut()
+        .flat_map(|a| a.stand_on_departures.iter_mut());
+    for precedence in departures.filter_map(|d| d.precedence.as_mut()) {
+        if let Some(name) = names.get(precedence.vessel) {
+            (*name).clone_into(&mut precedence.vessel_name);
+        }
+    }
 }
 
 /// Whether the vessel reported itself not under way (at anchor, moored,
@@ -364,7 +410,7 @@ fn still_closing(samples: &[EncounterSample], time_of_min_s: f64) -> bool {
 fn judge_target(
     track: &RecordedTrack,
     samples: &[EncounterSample],
-    giving_way: &[bool],
+    duties: &[Option<OtherDuty>],
     parameters: &ObservedParameters,
 ) -> ObservedEncounter {
     let name = track.name.as_str();
@@ -377,7 +423,7 @@ fn judge_target(
     };
     if let Some(latch) = latch {
         let assessment =
-            assess_encounter_acting(samples, &latch, &parameters.rules, scoring, giving_way);
+            assess_encounter_acting(samples, &latch, &parameters.rules, scoring, duties);
         let collision = assessment
             .violations
             .iter()

@@ -4,6 +4,7 @@ use super::BatchItem;
 use crate::evaluation::{Evaluation, TargetEvaluation, succeeded};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
+use vorrt_colregs::compliance::StandOnDeparture;
 use vorrt_colregs::rule10::Rule10Clause;
 use vorrt_colregs::{ComplianceViolation, Role};
 
@@ -124,6 +125,19 @@ pub struct BatchRow {
     /// (`rule_10c_crossing_not_square`).
     #[serde(default)]
     pub rule10_findings: String,
+    /// Stand-on encounters (crossing stand-on, being overtaken) judged.
+    #[serde(default)]
+    pub stand_on_encounters: usize,
+    /// Of those, the ones in which ownship kept its course and speed until
+    /// the give-way vessel came within the stand-on action range (no
+    /// departure, rule 17(a)(i); decision 45).
+    #[serde(default)]
+    pub stand_on_kept: usize,
+    /// Of the others, the ones whose every departure was justified by a duty
+    /// toward another vessel that took precedence (rules 2(b), 16,
+    /// 17(a)(ii); decision 45).
+    #[serde(default)]
+    pub stand_on_justified: usize,
 }
 
 /// A value a row read back from an older `rows.csv` lacks.
@@ -203,6 +217,9 @@ impl BatchRow {
             crossing_off_perpendicular_deg: None,
             separation_zone_entries: 0,
             rule10_findings: String::new(),
+            stand_on_encounters: 0,
+            stand_on_kept: 0,
+            stand_on_justified: 0,
         }
     }
 
@@ -221,6 +238,7 @@ impl BatchRow {
         )]
         let plans_f64 = plans as f64;
         let give_way = judged_give_way(evaluation);
+        let stand_on = stand_on_departures(evaluation);
         let planning_time_ms = 1000.0 * evaluation.planning_time_s;
         Self {
             index: item.index,
@@ -293,8 +311,31 @@ impl BatchRow {
                 .into_iter()
                 .collect::<Vec<_>>()
                 .join(";"),
+            stand_on_encounters: stand_on.len(),
+            stand_on_kept: stand_on
+                .iter()
+                .filter(|departures| departures.is_empty())
+                .count(),
+            stand_on_justified: stand_on
+                .iter()
+                .filter(|departures| {
+                    !departures.is_empty() && departures.iter().all(|d| d.precedence.is_some())
+                })
+                .count(),
         }
     }
+}
+
+/// The stand-on departures of every stand-on encounter judged, one list per
+/// encounter (empty: course and speed kept).
+fn stand_on_departures(evaluation: &Evaluation) -> Vec<&[StandOnDeparture]> {
+    evaluation
+        .targets
+        .iter()
+        .filter(|target| target.role == Role::StandOn)
+        .filter_map(|target| target.assessment.as_ref())
+        .map(|assessment| assessment.stand_on_departures.as_slice())
+        .collect()
 }
 
 /// Compliance with `rule` over the run: `None` when it applied to no

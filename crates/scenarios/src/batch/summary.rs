@@ -138,6 +138,19 @@ pub struct BatchSummary {
     /// graded fallback plan or the evasive manoeuvre).
     #[serde(default)]
     pub runs_with_rule_departures: usize,
+    /// Stand-on encounters over the batch.
+    #[serde(default)]
+    pub stand_on_encounters: usize,
+    /// The share of them in which ownship kept its course and speed until
+    /// the give-way vessel came within the stand-on action range (decision
+    /// 45); `null` with none.
+    #[serde(default)]
+    pub stand_on_kept_rate: Option<f64>,
+    /// Of the stand-on encounters with a departure, the share whose every
+    /// departure a duty toward another vessel justified (decision 45);
+    /// `null` with none.
+    #[serde(default)]
+    pub stand_on_justified_rate: Option<f64>,
     /// Runs whose track touched or crossed land (a safety failure).
     #[serde(default)]
     pub groundings: usize,
@@ -204,6 +217,8 @@ impl BatchSummary {
         let ran: Vec<&&BatchRow> = rows.iter().filter(|row| row.error.is_empty()).collect();
         let give_way_encounters: usize = ran.iter().map(|row| row.give_way_encounters).sum();
         let lane_crossings: usize = ran.iter().map(|row| row.lane_crossings).sum();
+        let stand_on_encounters: usize = ran.iter().map(|row| row.stand_on_encounters).sum();
+        let stand_on_kept: usize = ran.iter().map(|row| row.stand_on_kept).sum();
         let share = |count: usize| {
             (give_way_encounters > 0).then(|| count as f64 / give_way_encounters as f64)
         };
@@ -235,6 +250,13 @@ impl BatchSummary {
             give_way_apparent_rate: share(ran.iter().map(|row| row.give_way_apparent).sum()),
             give_way_early_rate: share(ran.iter().map(|row| row.give_way_early).sum()),
             runs_with_rule_departures: rows.iter().filter(|row| row.rule_departures > 0).count(),
+            stand_on_encounters,
+            stand_on_kept_rate: (stand_on_encounters > 0)
+                .then(|| stand_on_kept as f64 / stand_on_encounters as f64),
+            stand_on_justified_rate: (stand_on_encounters > stand_on_kept).then(|| {
+                ran.iter().map(|row| row.stand_on_justified).sum::<usize>() as f64
+                    / (stand_on_encounters - stand_on_kept) as f64
+            }),
             groundings: ran.iter().filter(|row| row.grounding).count(),
             land_clearance_violations: ran
                 .iter()
