@@ -327,6 +327,13 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                 // Holding on is already invalid this far: longer holds are too.
                 HoldOutcome::Invalid => break,
                 HoldOutcome::Refused => refused_m = Some(hold_m),
+                // Another alteration than the first found wins only with a
+                // return begun once past and clear: judged on the course it
+                // settles on, a return begun earlier swings back before the
+                // closest approach as observed (rule 8(d); decision 44).
+                HoldOutcome::Found(legs) if best.is_some() && !past_and_clear(&legs[0].state) => {
+                    refused_m = Some(hold_m);
+                }
                 HoldOutcome::Found(mut legs) => {
                     // The return is begun as soon as it is valid and every
                     // vessel ownship gives way to is past and clear
