@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use vorrt_cli::report::{PlanOutput, Report};
+use vorrt_scenarios::jfs::{MotionModel, Pose};
 use vorrt_scenarios::{Scenario, evaluate, simulate};
 
 fn vorrt(args: &[&str]) -> Output {
@@ -350,15 +351,41 @@ fn plan_keeps_off_land() {
         plan.waypoints.len() > 2,
         "a straight plan runs over the island"
     );
+    // Each leg as ownship sails it (a turn at its rate of turn from the
+    // waypoint's course, then a straight run), sampled 400 times: the chord
+    // between two waypoints cuts across the turn that begins the leg.
+    let config = scenario.planner_config().unwrap();
+    let speed_mps = scenario.ownship.speed_kn * 1852.0 / 3600.0;
+    let model = config
+        .turning
+        .ownship_model(scenario.ownship.length_m, speed_mps);
     for leg in plan.waypoints.windows(2) {
-        let distance_m = chart.segment_land_distance_m(
-            vorrt_scenarios::DVec2::new(leg[0].east_m, leg[0].north_m),
-            vorrt_scenarios::DVec2::new(leg[1].east_m, leg[1].north_m),
-        );
+        let start = Pose {
+            position_m: vorrt_scenarios::DVec2::new(leg[0].east_m, leg[0].north_m),
+            course_rad: leg[0].course_deg.to_radians(),
+        };
+        let end_m = vorrt_scenarios::DVec2::new(leg[1].east_m, leg[1].north_m);
+        let sailed = model
+            .steer(start, end_m, leg[1].speed_mps, f64::INFINITY)
+            .expect("a leg");
         assert!(
-            distance_m >= chart.land_clearance_m(),
-            "{distance_m} m from land"
+            sailed.end_m().distance(end_m) < 1.0,
+            "the leg ends at its waypoint"
         );
+        let samples = 400u32;
+        let points: Vec<_> = (0..=samples)
+            .map(|k| {
+                let elapsed_s = sailed.duration_s() * f64::from(k) / f64::from(samples);
+                sailed.pose_at(elapsed_s).position_m
+            })
+            .collect();
+        for pair in points.windows(2) {
+            let distance_m = chart.segment_land_distance_m(pair[0], pair[1]);
+            assert!(
+                distance_m >= chart.land_clearance_m(),
+                "{distance_m} m from land"
+            );
+        }
     }
 }
 

@@ -17,9 +17,11 @@
 //! ... points on, then bisection), which assumes nearer points are easier to
 //! reach; when the next point itself cannot be reached, a few more are tried.
 //! Before the branch's points, at every step, the simplifier tries the
-//! manoeuvre mariners use: one alteration of course ([`ALTERATIONS_DEG`],
-//! smallest first; none at all first of all), held for a while ([`HOLD_M`],
-//! shortest first), then one leg to the goal; when no alteration to
+//! manoeuvre mariners use: one alteration of course ([`ALTERATIONS_DEG`];
+//! none at all first of all), held for a while ([`HOLD_M`], shortest first,
+//! and between two of them the shortest whose end is past and clear), then
+//! one leg to the goal, the shortest such manoeuvre of the alterations up
+//! to 55° winning (decision 44); when no alteration to
 //! starboard (or holding on) at service speed is valid, the same at reduced
 //! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); scenario-based MPC's speed
 //! factors),
@@ -45,6 +47,9 @@ use glam::DVec2;
 use vorrt_colregs::{ManeuverViolation, Role};
 use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, MotionModel, Pose};
+
+mod hold;
+use hold::{Grade, HoldOutcome, RETURN_BISECTIONS, hold_and_return};
 
 /// When the next branch point cannot be reached by a valid leg, how many
 /// points beyond it are tried before the simplification gives up.
@@ -255,14 +260,25 @@ impl Alterations {
     }
 }
 
-/// From where `from` ends (at its end speed), the first manoeuvre of the
+/// From where `from` ends (at its end speed), the shortest manoeuvre of the
 /// form "turn onto the present course plus an alteration, at a fraction of
 /// the service speed, hold it for one of [`HOLD_M`], then one leg to the
-/// goal at service speed" that the validator accepts, trying the
-/// alterations and speeds of `alterations` in order and for each the
-/// shortest hold first. The hold and the return
-/// ([`return_to_goal`]: the leg to the goal, or a course astern of a vessel
-/// then that leg), or `None`.
+/// goal at service speed" that the validator accepts, from the first
+/// [`Grade`] of `alterations` (in order) that has one: for each alteration
+/// of the grade the shortest hold whose return is valid, and of these the
+/// manoeuvre with the least length sailed to the goal (decision 44). The
+/// hold and the return ([`return_to_goal`]: the leg to the goal, or a course
+/// astern of a vessel then that leg), or `None`.
+///
+/// Taking the first alteration that works (smallest first) held 35° for up
+/// to 12 km where 45° or 55° would have cleared the same vessels held for a
+/// fraction of it: on generated open-sea runs most of the path overhead was
+/// a small alteration held long. Every alteration of a grade is readily
+/// apparent (rule 8(b)) and begun at once (rule 8(a)), so the shortest of
+/// them is the smallest deviation that achieves the passing distance. A
+/// hold whose length plus the straight line from its end to the goal is no
+/// shorter than the best found cannot win (the triangle inequality: longer
+/// holds only lengthen it), so it is not validated.
 ///
 /// A reduced speed is held until it is reached (a speed change is readily
 /// apparent only once made: rule 8(b), half the speed) and until every
@@ -278,38 +294,80 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 ) -> Option<Vec<SimplifiedLeg>> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
+    let mut best: Option<(Grade, f64, Vec<SimplifiedLeg>)> = None;
     for (alteration_deg, factor) in alterations.order() {
+        let grade = Grade::of(alteration_deg, factor);
+        if best.as_ref().is_some_and(|(found, ..)| *found != grade) {
+            // A grade that has a manoeuvre is preferred to every later one.
+            break;
+        }
         let course_rad = pose.course_rad + alteration_deg.to_radians();
         let hold_speed_mps = factor * speeds.service_mps;
         let holds = alterations.holds(goal_m, || {
             model.turn_onto(pose, course_rad, hold_speed_mps, 0.0)
         });
-        for hold_m in holds {
+        let sail = |hold_m: f64| {
             let hold = model
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
                 .from_speed(start_mps, speeds.change_mps2);
-            let mut after_hold = from.state.clone();
-            if validator
-                .validate(&hold, from.end_elapsed_s, &mut after_hold)
-                .is_err()
+            let shortest_m = hold.length_m() + hold.end_m().distance(goal_m);
+            if best
+                .as_ref()
+                .is_some_and(|(_, best_m, _)| shortest_m >= *best_m)
             {
+                // This hold, and every longer one, sails farther than the best.
+                return HoldOutcome::Invalid;
+            }
+            hold_and_return(model, validator, from, hold, factor, speeds, goal_m)
+        };
+        // The longest hold known to be valid whose return was refused.
+        let mut refused_m: Option<f64> = None;
+        for hold_m in holds {
+            match sail(hold_m) {
                 // Holding on is already invalid this far: longer holds are too.
-                break;
-            }
-            if factor < 1.0 && !reduction_held(&hold, &after_hold) {
-                continue;
-            }
-            let hold = SimplifiedLeg {
-                end_elapsed_s: from.end_elapsed_s + hold.duration_s(),
-                leg: hold,
-                state: after_hold,
-            };
-            if let Some(back) = return_to_goal(model, validator, &hold, speeds, goal_m) {
-                return Some(std::iter::once(hold).chain(back).collect());
+                HoldOutcome::Invalid => break,
+                HoldOutcome::Refused => refused_m = Some(hold_m),
+                // Another alteration than the first found wins only with a
+                // return begun once past and clear: judged on the course it
+                // settles on, a return begun earlier swings back before the
+                // closest approach as observed (rule 8(d); decision 44).
+                HoldOutcome::Found(legs) if best.is_some() && !past_and_clear(&legs[0].state) => {
+                    refused_m = Some(hold_m);
+                }
+                HoldOutcome::Found(mut legs) => {
+                    // The return is begun as soon as it is valid and every
+                    // vessel ownship gives way to is past and clear
+                    // ([`past_and_clear`]): between the hold refused and this
+                    // one, the shortest such hold found by bisection (the
+                    // moment between two holds of HOLD_M was otherwise waited
+                    // for up to the longer one).
+                    if let Some(mut short_m) = refused_m {
+                        let mut long_m = hold_m;
+                        for _ in 0..RETURN_BISECTIONS {
+                            let middle_m = 0.5 * (short_m + long_m);
+                            match sail(middle_m) {
+                                HoldOutcome::Found(sooner) if past_and_clear(&sooner[0].state) => {
+                                    legs = sooner;
+                                    long_m = middle_m;
+                                }
+                                _ => short_m = middle_m,
+                            }
+                        }
+                    }
+                    let length_m = legs.iter().map(|leg| leg.leg.length_m()).sum::<f64>();
+                    if best
+                        .as_ref()
+                        .is_none_or(|(_, best_m, _)| length_m < *best_m)
+                    {
+                        best = Some((grade, length_m, legs));
+                    }
+                    // The shortest valid hold of this alteration is found.
+                    break;
+                }
             }
         }
     }
-    None
+    best.map(|(_, _, legs)| legs)
 }
 
 /// The courses to port of the goal's bearing that a return refused for
@@ -501,12 +559,22 @@ fn holds_short_of(abeam_m: f64) -> impl Iterator<Item = f64> {
 /// Whether a hold at reduced speed has reached it and ends with no
 /// encounter in force in which ownship gives way (the other vessel is past).
 pub(crate) fn reduction_held(hold: &Leg, after: &EncounterState) -> bool {
-    hold.duration_s() >= hold.speed_change_s()
-        && !after
-            .latches
-            .iter()
-            .flatten()
-            .any(|latch| latch.encounter.role() == Role::GiveWay)
+    hold.duration_s() >= hold.speed_change_s() && past_and_clear(after)
+}
+
+/// Whether every vessel ownship gives way to is past and clear (rule 8(d)):
+/// no encounter in which ownship gives way is in force in `state`. An
+/// encounter is released when [`vorrt_colregs::has_passed`] holds (decision
+/// 44 gives its reading for each encounter type and its sources: the range
+/// opening, and the other vessel abaft the beam by the sternlight's 22.5°,
+/// rule 21(c), or more than the risk distance off).
+#[must_use]
+pub fn past_and_clear(state: &EncounterState) -> bool {
+    !state
+        .latches
+        .iter()
+        .flatten()
+        .any(|latch| latch.encounter.role() == Role::GiveWay)
 }
 
 /// The speeds the manoeuvre search holds, as fractions of the service
@@ -572,128 +640,4 @@ fn farthest_reachable<F: Fn(usize) -> Option<SimplifiedLeg>>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::plan::RejectionCause;
-    use std::cell::Cell;
-    use vorrt_jfs::RateLimitedTurn;
-
-    /// Refuses every leg from `start_m` but the one toward `first_m`, and
-    /// accepts every other leg; counts the legs it judges.
-    struct OnlyToFirst {
-        start_m: DVec2,
-        first_m: DVec2,
-        judged: Cell<usize>,
-    }
-
-    impl MotionValidator for OnlyToFirst {
-        fn validate(
-            &self,
-            leg: &Leg,
-            _start_elapsed_s: f64,
-            _state: &mut EncounterState,
-        ) -> Result<(), RejectionCause> {
-            self.judged.set(self.judged.get() + 1);
-            if leg.start_m.distance(self.start_m) < 1e-9
-                && leg.end_m().distance(self.first_m) > 1e-6
-            {
-                Err(RejectionCause::Clearance)
-            } else {
-                Ok(())
-            }
-        }
-    }
-
-    /// Accepts holding the course north at 6 m/s, and any other leg only
-    /// from `from_north_m` on.
-    struct OnlyFarNorth {
-        from_north_m: f64,
-    }
-
-    impl MotionValidator for OnlyFarNorth {
-        #[expect(
-            clippy::float_cmp,
-            reason = "the hold is sailed at exactly the start's course and speed"
-        )]
-        fn validate(
-            &self,
-            leg: &Leg,
-            _start_elapsed_s: f64,
-            _state: &mut EncounterState,
-        ) -> Result<(), RejectionCause> {
-            let holding_north =
-                leg.turn_rad == 0.0 && leg.course_rad == 0.0 && leg.speed_mps == 6.0;
-            if holding_north || leg.start_m.y >= self.from_north_m {
-                Ok(())
-            } else {
-                Err(RejectionCause::Clearance)
-            }
-        }
-    }
-
-    #[test]
-    fn two_alterations_never_hold_a_course_past_the_goal() {
-        let model = RateLimitedTurn {
-            turn_radius_m: 300.0,
-        };
-        let start = Pose {
-            position_m: DVec2::ZERO,
-            course_rad: 0.0,
-        };
-        let search = |goal_m: DVec2| {
-            hold_then_alter(
-                &model,
-                &OnlyFarNorth {
-                    from_north_m: 6000.0,
-                },
-                start,
-                Speeds::constant(6.0),
-                goal_m,
-                &EncounterState::default(),
-            )
-        };
-        // With the goal 8 km ahead, the course is held 6 km, then the
-        // smallest alteration, then the goal.
-        let legs = search(DVec2::new(500.0, 8000.0)).expect("a manoeuvre");
-        assert!((legs[0].leg.end_m().y - 6000.0).abs() < 1e-6);
-        // With the goal 4 km ahead, the only valid manoeuvre holds the
-        // course 2 km past it: none is offered.
-        assert!(search(DVec2::new(500.0, 4000.0)).is_none());
-    }
-
-    #[test]
-    fn a_start_already_searched_is_not_searched_again_and_the_legs_are_the_same() {
-        let first_m = DVec2::new(600.0, 1500.0);
-        let points = [first_m, DVec2::new(0.0, 4000.0)];
-        let start = Pose {
-            position_m: DVec2::ZERO,
-            course_rad: 0.0,
-        };
-        let model = RateLimitedTurn {
-            turn_radius_m: 300.0,
-        };
-        let run = |start_searched: bool| {
-            let validator = OnlyToFirst {
-                start_m: DVec2::ZERO,
-                first_m,
-                judged: Cell::new(0),
-            };
-            let legs = simplify_after(
-                &model,
-                &validator,
-                start,
-                Speeds::constant(6.0),
-                &points,
-                &EncounterState::default(),
-                start_searched,
-            );
-            (legs, validator.judged.get())
-        };
-        let (searched, fresh) = (run(true), run(false));
-        assert!(searched.0.is_some());
-        assert_eq!(searched.0, fresh.0);
-        // The leg to the goal and the first hold of each of the 24
-        // alterations and speeds, refused at the start, are not judged again.
-        assert_eq!(fresh.1 - searched.1, 1 + 24);
-    }
-}
+mod tests;

@@ -1,0 +1,210 @@
+//! Tests of the simplifier and the manoeuvre search.
+
+use super::*;
+use crate::plan::RejectionCause;
+use std::cell::Cell;
+use vorrt_jfs::RateLimitedTurn;
+
+/// Refuses every leg from `start_m` but the one toward `first_m`, and
+/// accepts every other leg; counts the legs it judges.
+struct OnlyToFirst {
+    start_m: DVec2,
+    first_m: DVec2,
+    judged: Cell<usize>,
+}
+
+impl MotionValidator for OnlyToFirst {
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        self.judged.set(self.judged.get() + 1);
+        if leg.start_m.distance(self.start_m) < 1e-9 && leg.end_m().distance(self.first_m) > 1e-6 {
+            Err(RejectionCause::Clearance)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Accepts holding the course north at 6 m/s, and any other leg only
+/// from `from_north_m` on.
+struct OnlyFarNorth {
+    from_north_m: f64,
+}
+
+impl MotionValidator for OnlyFarNorth {
+    #[expect(
+        clippy::float_cmp,
+        reason = "the hold is sailed at exactly the start's course and speed"
+    )]
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let holding_north = leg.turn_rad == 0.0 && leg.course_rad == 0.0 && leg.speed_mps == 6.0;
+        if holding_north || leg.start_m.y >= self.from_north_m {
+            Ok(())
+        } else {
+            Err(RejectionCause::Clearance)
+        }
+    }
+}
+
+#[test]
+fn two_alterations_never_hold_a_course_past_the_goal() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let start = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    let search = |goal_m: DVec2| {
+        hold_then_alter(
+            &model,
+            &OnlyFarNorth {
+                from_north_m: 6000.0,
+            },
+            start,
+            Speeds::constant(6.0),
+            goal_m,
+            &EncounterState::default(),
+        )
+    };
+    // With the goal 8 km ahead, the course is held 6 km, then the
+    // smallest alteration, then the goal.
+    let legs = search(DVec2::new(500.0, 8000.0)).expect("a manoeuvre");
+    assert!((legs[0].leg.end_m().y - 6000.0).abs() < 1e-6);
+    // With the goal 4 km ahead, the only valid manoeuvre holds the
+    // course 2 km past it: none is offered.
+    assert!(search(DVec2::new(500.0, 4000.0)).is_none());
+}
+
+#[test]
+fn a_start_already_searched_is_not_searched_again_and_the_legs_are_the_same() {
+    let first_m = DVec2::new(600.0, 1500.0);
+    let points = [first_m, DVec2::new(0.0, 4000.0)];
+    let start = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let run = |start_searched: bool| {
+        let validator = OnlyToFirst {
+            start_m: DVec2::ZERO,
+            first_m,
+            judged: Cell::new(0),
+        };
+        let legs = simplify_after(
+            &model,
+            &validator,
+            start,
+            Speeds::constant(6.0),
+            &points,
+            &EncounterState::default(),
+            start_searched,
+        );
+        (legs, validator.judged.get())
+    };
+    let (searched, fresh) = (run(true), run(false));
+    assert!(searched.0.is_some());
+    assert_eq!(searched.0, fresh.0);
+    // The leg to the goal and the first hold of each of the 24
+    // alterations and speeds, refused at the start, are not judged again.
+    assert_eq!(fresh.1 - searched.1, 1 + 24);
+}
+
+/// A vessel crossing from starboard on a collision course: ownship, north
+/// at 6 m/s for a goal 20 km ahead, gives way (rule 15), holds its
+/// alteration until the vessel is past and clear (rule 8(d)), and begins
+/// its return then, not at the next hold of [`HOLD_M`] (decision 44).
+#[test]
+fn the_return_in_a_crossing_begins_once_the_vessel_is_past_and_clear() {
+    use crate::PlannerConfig;
+    use crate::safety::SafetyChecker;
+    use vorrt_colregs::{Encounter, VesselState, has_passed, update_latch};
+    use vorrt_jfs::TargetState;
+    let config = PlannerConfig::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    // West at 6 m/s, meeting ownship at (0, 4 km) after 667 s.
+    let target = VesselState::new(DVec2::new(4000.0, 4000.0), 270f64.to_radians(), 6.0, 50.0);
+    let tracks = [TargetState::constant_velocity(target).track()];
+    let goal_m = DVec2::new(0.0, 20_000.0);
+    let checker = SafetyChecker::new(&config, &tracks, own, goal_m, 0.0);
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let start = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    // The encounter is in force from the start, as the closed loop has it.
+    let latch = update_latch(None, &own, &target, 0.0, &config.rules);
+    assert_eq!(
+        latch.map(|latch| latch.encounter),
+        Some(Encounter::CrossingGiveWay)
+    );
+    let state = EncounterState {
+        latches: vec![latch],
+        alterations: vec![0.0],
+    };
+    let legs = simplify(
+        &model,
+        &checker,
+        start,
+        Speeds::constant(6.0),
+        &[goal_m],
+        &state,
+    )
+    .expect("a manoeuvre");
+    let hold = &legs[0].leg;
+    assert!(
+        hold.course_rad > 30f64.to_radians(),
+        "a starboard alteration"
+    );
+    // Past and clear as the rules judge it, along the hold.
+    let passed_at = |elapsed_s: f64| {
+        let pose = hold.pose_at(elapsed_s);
+        let own = VesselState::new(pose.position_m, pose.course_rad, 6.0, 50.0);
+        has_passed(
+            &own,
+            &tracks[0].state_at(elapsed_s),
+            Encounter::CrossingGiveWay,
+            &config.rules,
+        )
+    };
+    let return_s = legs[0].end_elapsed_s;
+    let described: Vec<String> = legs
+        .iter()
+        .map(|leg| {
+            format!(
+                "{:.0} deg {:.0} m to {:.0} s",
+                leg.leg.course_rad.to_degrees(),
+                leg.leg.length_m(),
+                leg.end_elapsed_s
+            )
+        })
+        .collect();
+    let first_passed_s = (0..3000)
+        .map(f64::from)
+        .find(|&elapsed_s| passed_at(elapsed_s))
+        .expect("passes within the hold");
+    assert!(
+        passed_at(return_s),
+        "the return begins once past and clear: {described:?}, past from {first_passed_s} s"
+    );
+    // Within a few seconds of the moment it holds (here 5 s; the holds of
+    // HOLD_M alone returned after the 4 km hold, about 110 s after it).
+    assert!(
+        return_s - first_passed_s < 45.0,
+        "return at {return_s:.0} s, past and clear from {first_passed_s:.0} s"
+    );
+    assert!(legs.last().expect("legs").leg.end_m().distance(goal_m) < 1e-6);
+}
