@@ -15,7 +15,7 @@ pub use import::{
     estimate,
 };
 pub use log::{AisLog, LineCounts, PositionReport, SUPPORTED_TYPES, VesselTrack, read_log};
-pub use replay::{MAKING_WAY_KN, Replay, ReplayOptions, build_replay, service_speed_kn};
+pub use replay::{Replay, ReplayOptions, build_replay, service_speed_kn};
 pub use tag_block::{TagBlock, TagBlockError, split_tag_block};
 
 // The scenario an import builds, so that this crate alone is enough.

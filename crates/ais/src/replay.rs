@@ -8,6 +8,8 @@ use crate::error::AisError;
 use crate::import::{ImportOptions, build_scenario};
 use crate::log::{AisLog, VesselTrack};
 use std::fmt::Write as _;
+use vorrt_geometry::units;
+use vorrt_scenarios::colregs::observed::MAKING_WAY_MPS;
 use vorrt_scenarios::{Behaviour, Scenario};
 
 /// What to replay.
@@ -55,14 +57,10 @@ fn csv_field(text: &str) -> String {
     }
 }
 
-/// Below this a vessel is not making way: its speed is no service speed
-/// (knots; the observed judgement's threshold for a course over ground,
-/// `vorrt_colregs::observed` noise model).
-pub const MAKING_WAY_KN: f64 = 0.5;
-
 /// Ownship's service speed in a replay (decision 48): the median of its
 /// recorded speeds over ground from `from_s` (UNIX seconds) on, counting
-/// only reports making way ([`MAKING_WAY_KN`]); `None` when it never made
+/// only reports making way (the observed judgement's threshold,
+/// [`MAKING_WAY_MPS`]); `None` when it never made
 /// way. The speed at the start report alone is no service speed: a tug
 /// leaving a berth at 6.7 kn then made 13 kn.
 #[must_use]
@@ -72,7 +70,7 @@ pub fn service_speed_kn(track: &VesselTrack, from_s: f64) -> Option<f64> {
         .iter()
         .filter(|report| report.time_unix_s.is_some_and(|time_s| time_s >= from_s))
         .filter_map(|report| report.speed_kn)
-        .filter(|speed_kn| *speed_kn >= MAKING_WAY_KN)
+        .filter(|speed_kn| units::knots_to_mps(*speed_kn) > MAKING_WAY_MPS)
         .collect();
     speeds_kn.sort_by(f64::total_cmp);
     let middle = speeds_kn.len() / 2;

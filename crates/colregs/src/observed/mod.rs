@@ -203,7 +203,9 @@ mod tests;
 
 pub use crate::compliance::episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
-pub use noise::{NoiseParameters, TrackNoise, position_noise_m, track_noise, typical_speed_mps};
+pub use noise::{
+    MAKING_WAY_MPS, NoiseParameters, TrackNoise, position_noise_m, track_noise, typical_speed_mps,
+};
 pub use observe::{OverGround, over_ground, over_ground_from};
 pub use parameters::ObservedParameters;
 pub use quality::{PathQuality, path_quality};

@@ -19,8 +19,8 @@ const BASELINE_S: f64 = 60.0;
 const MAX_SPREAD: f64 = 100.0;
 
 /// Speeds below this are a vessel not making way: its course over ground is
-/// no course (m/s; 0.5 kn).
-const MAKING_WAY_MPS: f64 = 0.257;
+/// no course, and its speed is no service speed (m/s; 0.5 kn).
+pub const MAKING_WAY_MPS: f64 = 0.257;
 
 /// The constants of the noise model, settable with the other parameters of
 /// the observed judgement (defaults and sources in decision 31).
