@@ -9,7 +9,7 @@ use super::legend::draw_legend;
 use super::{
     Chart, FAMILY, LANE_COLOUR, Label, MAX_MARKED, METRES_PER_NM, OWNSHIP_COLOUR, PlotData, Shift,
     Track, View, circle_points, clip_polygon, closest, draw_labels, fit_view, format_distance,
-    labelled, marker_interval_min, named_count, placer_for, tick, to_text, triangle,
+    labelled, marker_interval_min, named_count, placer_for, to_text, triangle,
 };
 use plotters::prelude::*;
 
@@ -43,20 +43,7 @@ pub(super) fn draw_trajectories<DB: DrawingBackend>(
         .y_label_area_size(y_label)
         .build_cartesian_2d(view.x0..view.x1, view.y0..view.y1)
         .map_err(to_text)?;
-    chart
-        .configure_mesh()
-        .x_desc("east (nm)")
-        .y_desc("north (nm)")
-        .x_labels(10)
-        .y_labels(10)
-        .x_label_formatter(&|value| tick(*value))
-        .y_label_formatter(&|value| tick(*value))
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .bold_line_style(RGBColor(210, 210, 210))
-        .light_line_style(RGBColor(240, 240, 240))
-        .draw()
-        .map_err(to_text)?;
+    super::time_axes::draw_grid(&mut chart, "east (nm)", "north (nm)", Some(10))?;
 
     super::land::draw_land(&mut chart, &data.land, &view)?;
     let marked = closest(&data.targets, MAX_MARKED);
