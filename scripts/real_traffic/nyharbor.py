@@ -270,6 +270,10 @@ def main():
         counts["real_no_action"] += "no_action" in findings(judgement)
         counts["real_crossed_ahead"] += "crossed_ahead" in findings(judgement)
         counts["real_undecided"] += len(judgement.get("undecided", []))
+        # Why (decision 49; older binaries give no reason).
+        why = target.get("undecided") or ""
+        counts["real_undecided_not_reported"] += why.startswith("target not reported")
+        counts["real_undecided_still_closing"] += why.startswith("still closing")
         details.append(
             {
                 "pair": [own_name, target["name"]],
@@ -277,7 +281,7 @@ def main():
                 "encounter": target["encounter"],
                 "findings": findings(judgement),
                 "turn_rate": judgement["path_quality"],
-                "undecided": judgement.get("undecided"),
+                "undecided": target.get("undecided") or judgement.get("undecided"),
             }
         )
         # 4: cut at the closest approach.
@@ -289,6 +293,9 @@ def main():
             if judgement is not None and judgement["targets"][0]["encounter"] != "none":
                 counts["cut_encounters"] += 1
                 counts["cut_undecided"] += bool(judgement.get("undecided"))
+                counts["cut_undecided_not_reported"] += (judgement["targets"][0].get("undecided") or "").startswith(
+                    "target not reported"
+                )
                 counts["cut_called_safe"] += (not judgement.get("undecided")) and judgement["targets"][0][
                     "clearance_kept"
                 ]
@@ -301,6 +308,9 @@ def main():
             continue
         counts["rest_judged"] += 1
         counts["rest_classed_encounter"] += judgement["targets"][0]["encounter"] in CLASSES
+        why = judgement["targets"][0].get("undecided") or ""
+        counts["rest_status_contradicts_motion"] += "status contradicts motion" in why
+        counts["rest_undecided"] += bool(judgement.get("undecided"))
     counts["pairs_within_1nm"] = len(pairs)
     counts["rest_pairs_within_1nm"] = len(rest_pairs)
     summary = {"counts": dict(sorted(counts.items())), "pairs": details}

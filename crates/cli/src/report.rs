@@ -332,6 +332,12 @@ pub struct TargetReport {
     /// (decision 45).
     #[serde(default)]
     pub stand_on_departures: Vec<StandOnDepartureReport>,
+    /// Why the encounter is undecided, in words (tracks recorded at sea:
+    /// still closing when the tracks end, a reported rest her motion
+    /// contradicts, a closest approach she did not report; decisions 32 and
+    /// 49); absent when decided.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub undecided: Option<String>,
 }
 
 /// A stand-on departure before the action range, and the duty toward
@@ -463,6 +469,7 @@ impl TargetReport {
                 .flat_map(|a| &a.stand_on_departures)
                 .map(StandOnDepartureReport::new)
                 .collect(),
+            undecided: target.undecided.map(|why| why.to_string()),
         }
     }
 }
@@ -586,7 +593,11 @@ impl Report {
                 target.role,
                 target.min_distance_m,
                 target.time_of_min_s / 60.0,
-                yes_no(target.compliant),
+                if target.undecided.is_some() {
+                    "undecided"
+                } else {
+                    yes_no(target.compliant)
+                },
                 target.score
             );
             for violation in &target.violations {

@@ -35,7 +35,7 @@ use crate::simulation::SimulationRecord;
 use serde::{Deserialize, Serialize};
 use vorrt_colregs::observed::{
     NavigationalStatus, ObservedEncounter, ObservedJudgement, ObservedParameters, RecordedTrack,
-    Recording, TrackNoise, judge,
+    Recording, TrackNoise, Undecided, judge,
 };
 use vorrt_colregs::rule10::{Rule10Judgement, judge_track};
 use vorrt_colregs::{
@@ -92,10 +92,12 @@ pub struct TargetEvaluation {
     /// obstacle, on clearance alone.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub status: Option<NavigationalStatus>,
-    /// The encounter was unfinished when the tracks ended (still closing at
-    /// the last sample): its clearance and passing are not a verdict.
-    #[serde(default)]
-    pub undecided: bool,
+    /// Why the recording cannot decide the encounter, if it cannot (still
+    /// closing when the tracks ended, a reported rest her motion
+    /// contradicts, a closest approach she did not report: decisions 32 and
+    /// 49): its clearance and passing are not a verdict.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub undecided: Option<Undecided>,
 }
 
 /// How a whole run fared.
@@ -528,7 +530,7 @@ pub fn observed_judgement(
 /// The recorded tracks of a run, as the observed judgement reads them:
 /// positions and recorded courses of every vessel on the run's time base.
 fn recording_of(scenario: &Scenario, record: &SimulationRecord) -> Recording {
-    let observation = |index: usize| record.observations.get(index).copied().unwrap_or_default();
+    let observation = |index: usize| record.observations.get(index).cloned().unwrap_or_default();
     let track = |name: &str, states: &[vorrt_colregs::VesselState], length_m: f64, index: usize| {
         RecordedTrack {
             name: name.to_owned(),

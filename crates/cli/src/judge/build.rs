@@ -346,8 +346,13 @@ pub(crate) fn rebuild(
         options,
         &mut assumptions,
     );
-    let (observations, observed) =
+    let (mut observations, observed) =
         observation::observe_all(list, &judged_indexes, &vessels, &jumps);
+    // What each target did not report (decision 49); ownship's own track is
+    // what is judged.
+    for (observation, vessel) in observations.iter_mut().zip(&vessels).skip(1) {
+        observation.unreported = resample::unreported(vessel, &clock, options.max_gap_s);
+    }
     let own_length_known = inputs[0].length_from != "default";
     let judged = Judged {
         tracks: judged_tracks,

@@ -8,7 +8,10 @@ use crate::error::CliError;
 use crate::judge::resample::Prepared;
 use crate::judge::tracks::Track;
 use serde::{Deserialize, Serialize};
-use vorrt_colregs::observed::{NavigationalStatus, TrackObservation, position_noise_m};
+use vorrt_colregs::observed::{
+    NavigationalStatus, TrackObservation, median_step_speed_mps, position_noise_m,
+    rest_contradicted,
+};
 use vorrt_geometry::units;
 use vorrt_scenarios::LocalFrame;
 
@@ -16,10 +19,6 @@ use vorrt_scenarios::LocalFrame;
 /// fix before is a jump, not a passage (50 kn: above any merchant ship and
 /// most fast craft; AIS reports speeds up to 102 kn).
 pub(crate) const DEFAULT_MAX_SPEED_KN: f64 = 50.0;
-
-/// Speeds below this are a vessel not making way, m/s (1 kn): a reported
-/// "at anchor" or "moored" is believed only of a vessel that stays below it.
-const AT_REST_MPS: f64 = 0.514;
 
 /// The judged turning circle for a vessel of known length: a radius of one
 /// length (a diameter of two), tighter than any displacement ship's
@@ -48,9 +47,14 @@ pub(crate) struct VesselObservation {
     pub(crate) action_detection_deg: f64,
     /// The navigational status it reported most often (AIS), snake case.
     pub(crate) status_reported: Option<String>,
-    /// The status it was judged with: as reported, except "at anchor",
-    /// "moored" or "aground" for a vessel that made way.
+    /// The status it was judged with: as reported (a reported rest is never
+    /// latched as an encounter; one the vessel's motion contradicts makes
+    /// the encounter undecided, `rule_18` says so: decision 49).
     pub(crate) status_judged: Option<String>,
+    /// Its median speed over ground between fixes, knots (what tells whether
+    /// a reported rest is believed).
+    #[serde(default)]
+    pub(crate) median_speed_kn: f64,
     /// The rule 18 responsibility or the rule 3(i) reading its status brings,
     /// in words.
     pub(crate) rule_18: Option<String>,
@@ -156,40 +160,32 @@ fn reported_status(track: &Track) -> Option<NavigationalStatus> {
         .map(|(status, _)| status)
 }
 
-/// What the judgement is told of one vessel (its jitter, its status) and
-/// what the output says of it. A reported rest is believed only of a vessel
-/// whose median fix-to-fix speed stays below 1 kn: AIS statuses are set by
-/// hand and often stale.
+/// What the judgement is told of one vessel (its jitter, its status, its
+/// median speed between fixes) and what the output says of it. Whether a
+/// reported rest is believed is the observed judgement's to say
+/// ([`rest_contradicted`]: AIS statuses are set by hand and often stale);
+/// a contradicted one leaves the encounter undecided (decision 49).
 pub(crate) fn observe(
     track: &Track,
     vessel: &Prepared,
     jumps_rejected: usize,
 ) -> (TrackObservation, VesselObservation) {
     let reported = reported_status(track);
-    let mut speeds_mps: Vec<f64> = vessel
-        .times_s
-        .windows(2)
-        .zip(vessel.positions_m.windows(2))
-        .map(|(times, positions)| positions[0].distance(positions[1]) / (times[1] - times[0]))
-        .collect();
-    speeds_mps.sort_by(f64::total_cmp);
-    let median_mps = speeds_mps.get(speeds_mps.len() / 2).copied().unwrap_or(0.0);
-    let judged = reported.filter(|status| !status.is_at_rest() || median_mps < AT_REST_MPS);
+    let median_mps = median_step_speed_mps(&vessel.times_s, &vessel.positions_m);
     let noise_m = position_noise_m(&vessel.times_s, &vessel.positions_m);
     let observation = TrackObservation {
         // A track with too few fixes to tell: no jitter assumed, but still a
         // track recorded at sea.
         position_noise_m: Some(noise_m.unwrap_or(0.0)),
-        status: judged,
+        status: reported,
+        median_speed_mps: Some(median_mps),
+        unreported: Vec::new(),
     };
-    let rule_18 = match (reported, judged) {
-        (Some(said), None) => Some(format!(
-            "reports {} but made way at {:.1} kn (median): judged as under way",
-            said.name(),
-            units::mps_to_knots(median_mps)
-        )),
-        (_, Some(status)) => status.rule_18().map(str::to_owned),
-        (None, None) => None,
+    let rule_18 = match rest_contradicted(reported, median_mps) {
+        Some(contradicted) => Some(contradicted.to_string()),
+        None => reported
+            .and_then(NavigationalStatus::rule_18)
+            .map(str::to_owned),
     };
     let output = VesselObservation {
         name: track.name.clone(),
@@ -199,7 +195,8 @@ pub(crate) fn observe(
         turn_tolerance_deg: 0.0,
         action_detection_deg: 0.0,
         status_reported: reported.map(|status| status.name().to_owned()),
-        status_judged: judged.map(|status| status.name().to_owned()),
+        status_judged: reported.map(|status| status.name().to_owned()),
+        median_speed_kn: units::mps_to_knots(median_mps),
         rule_18,
         ship_type: track.ship_type,
     };
@@ -289,7 +286,7 @@ mod tests {
     }
 
     #[test]
-    fn a_reported_rest_is_believed_only_of_a_vessel_at_rest() {
+    fn a_reported_rest_contradicted_by_the_motion_is_said() {
         let fixes = |speed_mps: f64| Track {
             name: "v".into(),
             fixes: (0..10)
@@ -309,8 +306,14 @@ mod tests {
         assert!(output.rule_18.unwrap().contains("3(i)"));
         let moving = fixes(5.0);
         let (observation, output) = observe(&moving, &Prepared::new(&moving, None), 0);
-        assert_eq!(observation.status, None);
-        assert!(output.rule_18.unwrap().contains("judged as under way"));
+        assert_eq!(observation.status, Some(NavigationalStatus::AtAnchor));
+        assert!(observation.median_speed_mps.unwrap() > 4.9);
+        assert!(
+            output
+                .rule_18
+                .unwrap()
+                .contains("status contradicts motion")
+        );
     }
 
     #[test]

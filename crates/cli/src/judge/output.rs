@@ -18,8 +18,10 @@ pub(crate) struct Judgement {
     /// (`vorrt_scenarios::Evaluation::safe_and_compliant`) and no encounter
     /// undecided: exit code 0.
     pub(crate) safe_and_compliant: bool,
-    /// The targets whose encounter was unfinished when the tracks ended
-    /// (still closing at the last sample): neither passed nor safe.
+    /// The targets whose encounter the tracks cannot decide (still closing
+    /// when they end, a reported rest the motion contradicts, a closest
+    /// approach not reported: `targets[].undecided` says which): neither
+    /// passed nor safe.
     pub(crate) undecided: Vec<String>,
     /// How the tracks were read, resampled and completed.
     pub(crate) input: Input,
@@ -37,7 +39,7 @@ impl Judgement {
         let undecided: Vec<String> = evaluation
             .targets
             .iter()
-            .filter(|target| target.undecided)
+            .filter(|target| target.undecided.is_some())
             .map(|target| target.name.clone())
             .collect();
         Self {
@@ -149,11 +151,10 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     for finding in &quality.findings {
         let _ = writeln!(text, "                - {finding}");
     }
-    for name in &judgement.undecided {
-        let _ = writeln!(
-            text,
-            "undecided:      {name:?}: still closing when the tracks end; not passed, not judged safe"
-        );
+    for target in report.targets.iter() {
+        if let Some(why) = &target.undecided {
+            let _ = writeln!(text, "undecided:      {:?}: {why}", target.name);
+        }
     }
     let _ = writeln!(
         text,

@@ -7,6 +7,7 @@
 use crate::error::CliError;
 use crate::judge::tracks::{Place, Track};
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::observed::Unreported;
 use vorrt_geometry::{DVec2, angle, units};
 use vorrt_scenarios::LocalFrame;
 
@@ -402,6 +403,41 @@ pub(crate) fn gaps(vessel: &Prepared, clock: &Clock, max_gap_s: f64) -> Vec<Gap>
         .collect()
 }
 
+/// The stretches of the judged interval over which `vessel`'s positions are
+/// not its reports: farther than half of `max_gap_s` from its nearest fix
+/// (decision 49). The judge bridges gaps up to `max_gap_s`, so every
+/// position it bridges lies within half of it of a fix; beyond that, before
+/// the first fix, after the last, or in the middle of a longer gap, the
+/// position is dead reckoning or a straight line, not what the vessel did.
+pub(crate) fn unreported(vessel: &Prepared, clock: &Clock, max_gap_s: f64) -> Vec<Unreported> {
+    let half_s = max_gap_s / 2.0;
+    let (first_s, last_s) = vessel.span_s();
+    let stretch = |from_s: f64, to_s: f64, last_fix_s, next_fix_s| {
+        let (from_s, to_s) = (from_s.max(clock.from_s), to_s.min(clock.to_s));
+        (to_s > from_s).then_some(Unreported {
+            from_s,
+            to_s,
+            last_fix_s,
+            next_fix_s,
+        })
+    };
+    let before = stretch(clock.from_s, first_s - half_s, None, Some(first_s));
+    let after = stretch(last_s + half_s, clock.to_s, Some(last_s), None);
+    let inside = vessel
+        .times_s
+        .windows(2)
+        .filter(|pair| pair[1] - pair[0] > max_gap_s)
+        .filter_map(|pair| {
+            stretch(
+                pair[0] + half_s,
+                pair[1] - half_s,
+                Some(pair[0]),
+                Some(pair[1]),
+            )
+        });
+    before.into_iter().chain(inside).chain(after).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -545,5 +581,29 @@ mod tests {
         let short = gaps(&target, &clock, 50.0);
         assert_eq!(short.iter().filter(|gap| gap.dead_reckoned).count(), 2);
         assert_eq!(short.len(), 4, "{short:?}");
+    }
+
+    #[test]
+    fn positions_farther_than_half_the_gap_limit_from_a_fix_are_unreported() {
+        // Fixes at 100, 200, 500 and 600 s on ownship's 0-1000 s; limit 120 s.
+        let own = Prepared::new(&track("own", &[(0.0, 0.0, 0.0), (1000.0, 0.0, 1.0)]), None);
+        let fixes = [100.0, 200.0, 500.0, 600.0].map(|t| (t, 0.0, t));
+        let target = Prepared::new(&track("t", &fixes), None);
+        let clock = clock(&[&own, &target], own.span_s(), Some(10.0)).unwrap();
+        let stretches = unreported(&target, &clock, 120.0);
+        let spans: Vec<(f64, f64, Option<f64>, Option<f64>)> = stretches
+            .iter()
+            .map(|s| (s.from_s, s.to_s, s.last_fix_s, s.next_fix_s))
+            .collect();
+        assert_eq!(
+            spans,
+            [
+                (0.0, 40.0, None, Some(100.0)),
+                (260.0, 440.0, Some(200.0), Some(500.0)),
+                (660.0, 1000.0, Some(600.0), None),
+            ]
+        );
+        // A limit above every gap leaves only the ends.
+        assert_eq!(unreported(&target, &clock, 400.0).len(), 1);
     }
 }

@@ -126,7 +126,7 @@ mod tests {
             score: 0.5,
             assessment: None,
             status: None,
-            undecided: false,
+            undecided: None,
         }
     }
 

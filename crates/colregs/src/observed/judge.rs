@@ -6,6 +6,9 @@ use super::noise::{TrackNoise, position_noise_m, track_noise, typical_speed_mps}
 use super::observe::{OverGround, over_ground_from};
 use super::quality::{PathQuality, path_quality};
 use super::status::NavigationalStatus;
+use super::undecided::{
+    Undecided, in_force_window_s, median_step_speed_mps, not_reported, rest_contradicted,
+};
 use super::{ObservedParameters, RecordedTrack, Recording};
 use crate::compliance::measure::closest_approach;
 use crate::compliance::{
@@ -91,12 +94,12 @@ pub struct ObservedEncounter {
     /// moored or aground it is judged as a stationary obstacle, on
     /// clearance alone (rule 3(i); decision 32).
     pub status: Option<NavigationalStatus>,
-    /// Whether the encounter was unfinished when the tracks ended: risk of
-    /// collision had arisen and the two were still closing at the last
-    /// sample, so the closest approach and the passing are not known. The
-    /// findings so far stand; the clearance kept and the passing side are
-    /// not a verdict (decision 32).
-    pub undecided: bool,
+    /// Why the recording cannot decide the encounter, if it cannot: still
+    /// closing when the tracks ended (decision 32), a reported rest that
+    /// the target's motion contradicts, or a closest approach or in-force
+    /// window the target did not report (decision 49). The findings so far
+    /// stand; the clearance kept and the passing side are not a verdict.
+    pub undecided: Option<Undecided>,
 }
 
 /// The judgement of a whole recording as observed.
@@ -415,6 +418,8 @@ fn judge_target(
 ) -> ObservedEncounter {
     let name = track.name.as_str();
     let status = track.observation.status;
+    let times_s: Vec<f64> = samples.iter().map(|s| s.time_s).collect();
+    let times_s = times_s.as_slice();
     let scoring = &parameters.scoring;
     let latch = if at_rest(track) {
         None
@@ -428,6 +433,16 @@ fn judge_target(
             .violations
             .iter()
             .any(|v| matches!(v, ComplianceViolation::Collision { .. }));
+        let in_force_s = in_force_window_s(samples, latch.latched_at_s, assessment.passed_at_s);
+        let undecided = not_reported(
+            &track.observation.unreported,
+            assessment.time_of_min_s,
+            in_force_s,
+        )
+        .or_else(|| {
+            (!collision && still_closing(samples, assessment.time_of_min_s))
+                .then_some(Undecided::StillClosing)
+        });
         return ObservedEncounter {
             name: name.to_owned(),
             latch: Some(latch),
@@ -439,7 +454,7 @@ fn judge_target(
             score: assessment.scores.overall,
             compliant: assessment.compliant,
             status,
-            undecided: !collision && still_closing(samples, assessment.time_of_min_s),
+            undecided,
             assessment: Some(assessment),
         };
     }
@@ -453,6 +468,15 @@ fn judge_target(
             ),
             None => (f64::INFINITY, 0.0, false, true),
         };
+    // A reported rest her motion contradicts: her duties are not known
+    // (decision 49). Else a clearance broken where she did not report rests
+    // on invented positions. A vessel at rest needs no reports to be where
+    // she is.
+    let undecided = rest_contradicted(status, median_speed_mps(times_s, track)).or_else(|| {
+        (!clearance_kept && !at_rest(track))
+            .then(|| not_reported(&track.observation.unreported, time_of_min_s, None))
+            .flatten()
+    });
     let mut findings = Vec::new();
     if !clearance_kept {
         findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });
@@ -476,6 +500,15 @@ fn judge_target(
         },
         compliant: true,
         status,
-        undecided: false,
+        undecided,
     }
+}
+
+/// A track's median speed over ground: the recording's, from the fixes,
+/// else from its positions.
+fn median_speed_mps(times_s: &[f64], track: &RecordedTrack) -> f64 {
+    track
+        .observation
+        .median_speed_mps
+        .unwrap_or_else(|| median_step_speed_mps(times_s, &track.positions_m))
 }

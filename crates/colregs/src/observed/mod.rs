@@ -40,12 +40,25 @@
 //! no jitter and is judged with the window and thresholds as given; every
 //! track's figures are in [`ObservedJudgement::noise`].
 //!
-//! ## Status and unfinished encounters
+//! ## Status and what a recording cannot decide
 //! A target reporting itself at anchor, moored or aground
 //! ([`TrackObservation::status`], [`NavigationalStatus::is_at_rest`]) is not
-//! under way (rule 3(i)): judged on clearance alone, never latched. An
-//! encounter whose vessels are still closing at the last sample is
-//! [`undecided`](ObservedEncounter::undecided) (decision 32).
+//! under way (rule 3(i)): judged on clearance alone, never latched. If she
+//! nevertheless made way (median speed over ground of
+//! [`REST_BELIEVED_BELOW_MPS`], 1 kn, or more: [`rest_contradicted`]), her
+//! status and her motion contradict each other and her duties are not
+//! known: still judged on clearance alone, rules 13-17 not judged, and the
+//! encounter [`undecided`](ObservedEncounter::undecided)
+//! ([`Undecided::StatusContradictsMotion`]). An encounter is also undecided
+//! when its vessels are still closing at the last sample
+//! ([`Undecided::StillClosing`], decision 32), and when its closest
+//! approach, or more than half of its in-force window (from the latch to
+//! the first sample passed, else to the end), lies in a stretch the target
+//! did not report ([`TrackObservation::unreported`], [`not_reported`],
+//! [`Undecided::NotReported`]); a target never latched is undecided so
+//! only where its clearance was broken at an unreported closest approach
+//! (decision 49). The findings so far stand; the passing and the clearance
+//! are not a verdict.
 //!
 //! ## Path quality
 //! Of ownship's track ([`path_quality`]), from the recorded course where the
@@ -200,6 +213,7 @@ mod recording;
 mod status;
 #[cfg(test)]
 mod tests;
+mod undecided;
 
 pub use crate::compliance::episodes::{TurnEpisode, turn_episodes, turn_reversals};
 pub use judge::{ObservedEncounter, ObservedJudgement, TrackFinding, judge};
@@ -211,3 +225,7 @@ pub use parameters::ObservedParameters;
 pub use quality::{PathQuality, path_quality};
 pub use recording::{RecordedTrack, Recording, TrackObservation};
 pub use status::NavigationalStatus;
+pub use undecided::{
+    REST_BELIEVED_BELOW_MPS, Undecided, Unreported, in_force_window_s, median_step_speed_mps,
+    not_reported, rest_contradicted,
+};

@@ -1,4 +1,5 @@
-//! Status and unfinished encounters on recorded tracks (decision 32).
+//! Status, unfinished encounters and what a target did not report, on
+//! recorded tracks (decisions 32 and 49).
 
 use super::*;
 use crate::encounter::Encounter;
@@ -19,6 +20,7 @@ fn recording(duration_s: f64, status: Option<NavigationalStatus>, at_rest: bool)
         observation: TrackObservation {
             position_noise_m: None,
             status,
+            ..TrackObservation::default()
         },
     };
     let target_velocity = if at_rest {
@@ -73,7 +75,86 @@ fn tracks_that_end_while_closing_are_undecided() {
         target.latch.map(|latch| latch.encounter),
         Some(Encounter::HeadOn)
     );
-    assert!(target.undecided);
+    assert_eq!(target.undecided, Some(Undecided::StillClosing));
     let whole = judge(&recording(1200.0, None, false), &parameters).expect("valid");
-    assert!(!whole.targets[0].undecided);
+    assert!(whole.targets[0].undecided.is_none());
+}
+
+#[test]
+fn a_moored_vessel_making_way_is_no_encounter_and_undecided() {
+    let parameters = ObservedParameters::default();
+    // Reports moored but meets ownship head-on at 6 m/s (decision 49): no
+    // latch, judged on clearance alone, undecided.
+    let moving = judge(
+        &recording(1600.0, Some(NavigationalStatus::Moored), false),
+        &parameters,
+    )
+    .expect("valid");
+    let target = &moving.targets[0];
+    assert!(target.latch.is_none(), "{:?}", target.latch);
+    assert!(
+        target.findings.iter().all(|f| !f.is_rule_violation()),
+        "{:?}",
+        target.findings
+    );
+    match target.undecided {
+        Some(Undecided::StatusContradictsMotion { status, speed_kn }) => {
+            assert_eq!(status, NavigationalStatus::Moored);
+            assert!((speed_kn - 11.66).abs() < 0.05, "{speed_kn}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // Moored and still: a stationary obstacle, decided.
+    let still = judge(
+        &recording(1600.0, Some(NavigationalStatus::Moored), true),
+        &parameters,
+    )
+    .expect("valid");
+    assert!(still.targets[0].latch.is_none());
+    assert!(still.targets[0].undecided.is_none());
+    // Under way: the encounter as before.
+    let under_way = judge(
+        &recording(1600.0, Some(NavigationalStatus::UnderWayUsingEngine), false),
+        &parameters,
+    )
+    .expect("valid");
+    assert_eq!(
+        under_way.targets[0].latch.map(|latch| latch.encounter),
+        Some(Encounter::HeadOn)
+    );
+    assert!(under_way.targets[0].undecided.is_none());
+}
+
+#[test]
+fn a_closest_approach_the_target_did_not_report_is_undecided() {
+    let parameters = ObservedParameters::default();
+    // Head-on, closest approach at 750 s; the target's last report at 600 s.
+    let mut silent = recording(1600.0, None, false);
+    silent.targets[0].observation.unreported = vec![Unreported {
+        from_s: 660.0,
+        to_s: 1600.0,
+        last_fix_s: Some(600.0),
+        next_fix_s: None,
+    }];
+    let judged = judge(&silent, &parameters).expect("valid");
+    let target = &judged.targets[0];
+    assert_eq!(
+        target.latch.map(|latch| latch.encounter),
+        Some(Encounter::HeadOn)
+    );
+    assert!(
+        matches!(
+            target.undecided,
+            Some(Undecided::NotReported {
+                closest_approach_unreported: true,
+                ..
+            })
+        ),
+        "{:?}",
+        target.undecided
+    );
+    // Reports through the closest approach: decided.
+    silent.targets[0].observation.unreported[0].from_s = 860.0;
+    let judged = judge(&silent, &parameters).expect("valid");
+    assert!(judged.targets[0].undecided.is_none());
 }

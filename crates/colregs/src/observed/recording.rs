@@ -2,6 +2,7 @@
 //! every target on one time base.
 
 use super::status::NavigationalStatus;
+use super::undecided::Unreported;
 use crate::error::ColregsError;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -28,7 +29,7 @@ pub struct RecordedTrack {
 
 /// What a recording knows of how one track was observed, beyond its
 /// positions.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default)]
 pub struct TrackObservation {
     /// The position jitter of the vessel's fixes (1 σ), metres, estimated
@@ -37,8 +38,21 @@ pub struct TrackObservation {
     /// from `positions_m` (0 for a closed-loop run's exact tracks).
     pub position_noise_m: Option<f64>,
     /// The navigational status the vessel reported (AIS); `None`: not
-    /// reported, a vessel under way.
+    /// reported, a vessel under way. At anchor, moored or aground the
+    /// vessel is never latched as an encounter; if she nevertheless made way
+    /// (`median_speed_mps`), her encounter is undecided (decision 49).
     pub status: Option<NavigationalStatus>,
+    /// The vessel's median speed over ground between consecutive fixes, m/s,
+    /// from the fixes themselves (`None`: from `positions_m`); it tells
+    /// whether a reported rest is believed
+    /// ([`rest_contradicted`](super::rest_contradicted)).
+    pub median_speed_mps: Option<f64>,
+    /// The stretches of the clock over which the vessel's positions are not
+    /// its reports (dead-reckoned, or bridged across a long gap); empty for a
+    /// closed-loop run. An encounter whose closest approach, or most of
+    /// whose in-force window, lies in one is undecided
+    /// ([`not_reported`](super::not_reported); decision 49).
+    pub unreported: Vec<Unreported>,
 }
 
 /// A recorded run: sample times, ownship's track and every target's, each
@@ -115,6 +129,24 @@ impl Recording {
             {
                 return invalid(format!(
                     "vessel `{name}`: observation.position_noise_m is {noise_m}, expected a finite distance of at least 0"
+                ));
+            }
+            if let Some(speed) = track.observation.median_speed_mps
+                && !(speed.is_finite() && speed >= 0.0)
+            {
+                return invalid(format!(
+                    "vessel `{name}`: observation.median_speed_mps is {speed}, expected a finite speed of at least 0"
+                ));
+            }
+            if let Some(stretch) = track
+                .observation
+                .unreported
+                .iter()
+                .find(|s| !(s.from_s.is_finite() && s.to_s.is_finite() && s.from_s <= s.to_s))
+            {
+                return invalid(format!(
+                    "vessel `{name}`: observation.unreported stretch from {} s to {} s, expected finite times in order",
+                    stretch.from_s, stretch.to_s
                 ));
             }
             if let Some(courses) = &track.courses_rad {
