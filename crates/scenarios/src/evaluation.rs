@@ -43,10 +43,6 @@ use vorrt_colregs::{
 };
 
 /// How ownship fared against one target.
-#[expect(
-    clippy::struct_excessive_bools,
-    reason = "a plain record of documented outcome flags"
-)]
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct TargetEvaluation {
     /// The target's name.

@@ -151,7 +151,7 @@ pub(crate) fn table(judgement: &Judgement) -> String {
     for finding in &quality.findings {
         let _ = writeln!(text, "                - {finding}");
     }
-    for target in report.targets.iter() {
+    for target in &report.targets {
         if let Some(why) = &target.undecided {
             let _ = writeln!(text, "undecided:      {:?}: {why}", target.name);
         }

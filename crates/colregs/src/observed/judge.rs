@@ -60,10 +60,6 @@ impl std::fmt::Display for TrackFinding {
 }
 
 /// Ownship and one target, judged on the observed states.
-#[expect(
-    clippy::struct_excessive_bools,
-    reason = "a plain record of documented outcome flags"
-)]
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ObservedEncounter {
     /// The target's name.
@@ -436,8 +432,10 @@ fn judge_target(
         let in_force_s = in_force_window_s(samples, latch.latched_at_s, assessment.passed_at_s);
         let undecided = not_reported(
             &track.observation.unreported,
-            assessment.time_of_min_s,
+            (assessment.time_of_min_s, assessment.min_distance_m),
             in_force_s,
+            median_speed_mps(times_s, track),
+            |distance_m| keeps(samples, track, distance_m, scoring.clearance_m),
         )
         .or_else(|| {
             (!collision && still_closing(samples, assessment.time_of_min_s))
@@ -474,7 +472,15 @@ fn judge_target(
     // she is.
     let undecided = rest_contradicted(status, median_speed_mps(times_s, track)).or_else(|| {
         (!clearance_kept && !at_rest(track))
-            .then(|| not_reported(&track.observation.unreported, time_of_min_s, None))
+            .then(|| {
+                not_reported(
+                    &track.observation.unreported,
+                    (time_of_min_s, min_distance_m),
+                    None,
+                    median_speed_mps(times_s, track),
+                    |_| false,
+                )
+            })
             .flatten()
     });
     let mut findings = Vec::new();
@@ -502,6 +508,18 @@ fn judge_target(
         status,
         undecided,
     }
+}
+
+/// Whether `distance_m` between ownship and the target keeps the clearance
+/// between the hulls ([`keeps_clearance`](crate::rules::keeps_clearance)).
+fn keeps(
+    samples: &[EncounterSample],
+    track: &RecordedTrack,
+    distance_m: f64,
+    clearance_m: f64,
+) -> bool {
+    let own_length_m = samples.first().map_or(0.0, |s| s.own.length_m);
+    crate::rules::keeps_clearance(distance_m, own_length_m, track.length_m, clearance_m)
 }
 
 /// A track's median speed over ground: the recording's, from the fixes,

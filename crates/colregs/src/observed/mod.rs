@@ -227,5 +227,5 @@ pub use recording::{RecordedTrack, Recording, TrackObservation};
 pub use status::NavigationalStatus;
 pub use undecided::{
     REST_BELIEVED_BELOW_MPS, Undecided, Unreported, in_force_window_s, median_step_speed_mps,
-    not_reported, rest_contradicted,
+    not_reported, reach_m, rest_contradicted,
 };

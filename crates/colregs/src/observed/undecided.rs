@@ -181,16 +181,31 @@ pub fn median_step_speed_mps(times_s: &[f64], positions_m: &[glam::DVec2]) -> f6
     speeds_mps.get(speeds_mps.len() / 2).copied().unwrap_or(0.0)
 }
 
+/// How far a vessel may be from where an unreported stretch puts her at
+/// `time_s`, metres: twice her speed times the time from her nearest fix
+/// (she may have stopped, or turned back, as soon as she fell silent).
+#[must_use]
+pub fn reach_m(stretch: &Unreported, time_s: f64, speed_mps: f64) -> f64 {
+    let since_s = stretch.last_fix_s.map_or(f64::INFINITY, |t| time_s - t);
+    let until_s = stretch.next_fix_s.map_or(f64::INFINITY, |t| t - time_s);
+    2.0 * speed_mps * since_s.min(until_s).max(0.0)
+}
+
 /// Whether an encounter rests on what the target did not report (decision
-/// 49): its closest approach (`time_of_min_s`) lies in an unreported
-/// stretch, or more than half of its in-force window (from `in_force_s.0`
-/// to `in_force_s.1`) does.
+/// 49): its closest approach (`closest_approach`: time, seconds, and
+/// distance, metres) lies in an unreported stretch and, moved by her
+/// [`reach_m`] at `speed_mps`, could break the clearance (`keeps_clearance`
+/// of a distance says whether it is kept); or more than half of its
+/// in-force window (from `in_force_s.0` to `in_force_s.1`) is unreported.
 #[must_use]
 pub fn not_reported(
     unreported: &[Unreported],
-    time_of_min_s: f64,
+    closest_approach: (f64, f64),
     in_force_s: Option<(f64, f64)>,
+    speed_mps: f64,
+    keeps_clearance: impl Fn(f64) -> bool,
 ) -> Option<Undecided> {
+    let (time_of_min_s, min_distance_m) = closest_approach;
     let (share, longest) = match in_force_s {
         Some((from_s, to_s)) if to_s > from_s => {
             let covered_s: f64 = unreported.iter().map(|s| s.overlap_s(from_s, to_s)).sum();
@@ -202,7 +217,10 @@ pub fn not_reported(
         }
         _ => (0.0, None),
     };
-    let at_closest = unreported.iter().find(|s| s.contains(time_of_min_s));
+    let at_closest = unreported.iter().find(|s| {
+        s.contains(time_of_min_s)
+            && !keeps_clearance(min_distance_m - reach_m(s, time_of_min_s, speed_mps))
+    });
     let stretch = at_closest.or(longest.filter(|_| share > 0.5))?;
     Some(Undecided::NotReported {
         stretch: *stretch,
@@ -240,10 +258,35 @@ mod tests {
     #[test]
     fn a_closest_approach_unreported_is_undecided() {
         let stretch = [after(1000.0, 1060.0, 2000.0)];
-        let undecided = not_reported(&stretch, 1500.0, Some((900.0, 1600.0))).expect("undecided");
+        let keeps = |distance_m: f64| distance_m >= 200.0;
+        let undecided = not_reported(
+            &stretch,
+            (1500.0, 1000.0),
+            Some((900.0, 1600.0)),
+            1.0,
+            keeps,
+        )
+        .expect("undecided");
         assert!(undecided.to_string().contains("not reported from 1000 s"));
         assert!(undecided.to_string().contains("closest approach"));
-        assert!(not_reported(&stretch, 1050.0, Some((900.0, 1200.0))).is_none());
+        assert!(
+            not_reported(
+                &stretch,
+                (1050.0, 1000.0),
+                Some((900.0, 1200.0)),
+                1.0,
+                keeps
+            )
+            .is_none()
+        );
+        // 500 s silent at 0.5 m/s: she cannot have come within 500 m of
+        // where she was put, so a closest approach of 800 m keeps 200 m.
+        assert!(
+            not_reported(&stretch, (1500.0, 800.0), Some((900.0, 1200.0)), 0.5, keeps).is_none()
+        );
+        assert!(
+            not_reported(&stretch, (1500.0, 600.0), Some((900.0, 1200.0)), 0.5, keeps).is_some()
+        );
     }
 
     #[test]
@@ -251,10 +294,20 @@ mod tests {
         let stretch = [after(1000.0, 1060.0, 2000.0)];
         // In force 1000-1900 s, 840 of 900 s unreported; the closest
         // approach at the last fix.
-        let undecided = not_reported(&stretch, 1040.0, Some((1000.0, 1900.0))).expect("undecided");
+        let keeps = |distance_m: f64| distance_m >= 200.0;
+        let undecided = not_reported(
+            &stretch,
+            (1040.0, 300.0),
+            Some((1000.0, 1900.0)),
+            5.0,
+            keeps,
+        )
+        .expect("undecided");
         assert!(undecided.to_string().contains("93 %"), "{undecided}");
         // Half or less: decided.
-        assert!(not_reported(&stretch, 1040.0, Some((200.0, 1900.0))).is_none());
+        assert!(
+            not_reported(&stretch, (1040.0, 300.0), Some((200.0, 1900.0)), 5.0, keeps).is_none()
+        );
     }
 
     #[test]
