@@ -73,6 +73,12 @@ pub struct PlannerSettings {
     /// (default 1).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub risk_cpa_nm: Option<f64>,
+    /// The width of navigable water the scenario's vessels are in, nautical
+    /// miles, where the water is confined: the risk-of-collision distance is
+    /// then at most a quarter of it, never under `d_th` between the hulls
+    /// (decision 50). Default: open sea.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sea_room_nm: Option<f64>,
     /// Half-width of the head-on sector, degrees (default 13).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub head_on_half_width_deg: Option<f64>,
@@ -133,6 +139,7 @@ impl PlannerSettings {
             ("time_budget_s", self.time_budget_s),
             ("mtd_nm", self.mtd_nm),
             ("risk_cpa_nm", self.risk_cpa_nm),
+            ("sea_room_nm", self.sea_room_nm),
             ("head_on_half_width_deg", self.head_on_half_width_deg),
             ("abaft_beam_deg", self.abaft_beam_deg),
             ("passed_angle_deg", self.passed_angle_deg),
@@ -159,6 +166,9 @@ impl PlannerSettings {
         let mut config = base;
         self.apply_search_to(&mut config);
         self.apply_rules_to(&mut config.rules);
+        // The risk-of-collision distance never goes under d_th between the
+        // hulls (decision 50): the scenario's d_th.
+        config.rules.risk_distance.clearance_floor_m = config.clearance_m;
         config
     }
 
@@ -223,6 +233,9 @@ impl PlannerSettings {
             self.risk_cpa_nm,
             units::nautical_miles_to_m,
         );
+        if let Some(sea_room_nm) = self.sea_room_nm {
+            rules.risk_distance.sea_room_m = Some(units::nautical_miles_to_m(sea_room_nm));
+        }
         set_si(
             &mut rules.head_on_half_width_rad,
             self.head_on_half_width_deg,

@@ -197,6 +197,8 @@ mod quality;
 #[cfg(test)]
 mod real_tests;
 mod recording;
+#[cfg(test)]
+mod risk_distance_tests;
 mod status;
 #[cfg(test)]
 mod tests;
