@@ -76,3 +76,79 @@ fn large_ships_are_at_risk_farther_out_in_open_sea() {
     let small = judged(&meeting(100.0, 7.0, miss_m), &ObservedParameters::default());
     assert_eq!(small.latch, None);
 }
+
+/// Ownship at 8 m/s overtakes a vessel at 5 m/s, 3 km ahead on a parallel
+/// track `offset_m` to starboard (100 m each, 1 s steps sampled every
+/// 10 s, positions only); from 60 s ownship turns at 0.5°/s to
+/// `turn_deg` (negative: to port) and holds it.
+fn overtaking(offset_m: f64, turn_deg: f64) -> Recording {
+    let (mut own_m, mut course_rad) = (DVec2::ZERO, 0.0_f64);
+    let target_course_rad = turn_deg.to_radians();
+    let mut positions_m = Vec::new();
+    let mut times_s = Vec::new();
+    for second in 0..=1800_u32 {
+        if second % 10 == 0 {
+            positions_m.push(own_m);
+            times_s.push(f64::from(second));
+        }
+        if second >= 60 {
+            let step =
+                (target_course_rad - course_rad).clamp(-0.5_f64.to_radians(), 0.5_f64.to_radians());
+            course_rad += step;
+        }
+        own_m += DVec2::new(course_rad.sin(), course_rad.cos()) * 8.0;
+    }
+    let target_start = DVec2::new(offset_m, 3000.0);
+    let track = |name: &str, positions_m: Vec<DVec2>| RecordedTrack {
+        name: name.into(),
+        length_m: 100.0,
+        positions_m,
+        courses_rad: None,
+        observation: TrackObservation::default(),
+    };
+    Recording {
+        ownship: track("ownship", positions_m),
+        targets: vec![track(
+            "TS1",
+            times_s
+                .iter()
+                .map(|t| target_start + DVec2::new(0.0, 5.0) * *t)
+                .collect(),
+        )],
+        times_s,
+    }
+}
+
+fn names(target: &ObservedEncounter) -> Vec<&'static str> {
+    target
+        .findings
+        .iter()
+        .map(crate::ComplianceViolation::name)
+        .collect()
+}
+
+#[test]
+fn an_overtaking_that_keeps_out_of_the_way_is_not_faulted_for_the_size_of_its_alteration() {
+    // Set up to pass 150 m off (under d_th between the hulls), ownship
+    // opens the pass with a 15° alteration to port and passes far clear:
+    // rule 13 asks it to keep out of the way until past and clear, which
+    // it did (before decision 50: `late_action` and `action_not_apparent`).
+    let target = judged(&overtaking(150.0, -15.0), &ObservedParameters::default());
+    assert_eq!(target.latch.expect("risk").encounter, Encounter::Overtaking);
+    assert!(target.clearance_kept);
+    assert!(target.findings.is_empty(), "{:?}", names(&target));
+    // Holding on and passing 150 m off is not keeping out of the way: the
+    // clearance broken and the action that was owed not taken.
+    let held = judged(&overtaking(150.0, 0.0), &ObservedParameters::default());
+    let found = names(&held);
+    assert!(
+        found.contains(&"clearance_violated") && found.contains(&"no_action"),
+        "{found:?}"
+    );
+    // The parallel pass 0.2 nm off has no finding, as before (decision 42).
+    let parallel = judged(
+        &overtaking(0.2 * 1852.0, 0.0),
+        &ObservedParameters::default(),
+    );
+    assert!(parallel.findings.is_empty(), "{:?}", names(&parallel));
+}
