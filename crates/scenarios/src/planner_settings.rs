@@ -325,6 +325,14 @@ fn to_file_units(field: &str, value: f64, expected: &str) -> (String, f64, Strin
             units::m_to_nautical_miles(value),
             expected.replace("a finite number", "a finite number of nautical miles"),
         ),
+        "risk_distance.sea_room_m" => (
+            "sea_room_nm".into(),
+            units::m_to_nautical_miles(value),
+            expected.replace(
+                "a finite number of metres",
+                "a finite number of nautical miles",
+            ),
+        ),
         "stand_on_speed_tolerance_mps" => (
             "stand_on_speed_tolerance_kn".into(),
             units::mps_to_knots(value),

@@ -579,7 +579,11 @@ fn judging_config(
     if let Some(sea_room_m) = options.sea_room_m {
         config.rules.risk_distance.sea_room_m = Some(sea_room_m);
     }
-    assumptions.push(risk_distance_said(&config, judged));
+    assumptions.push(super::risk::risk_distance_said(
+        &config.rules,
+        judged.lengths_m[0],
+        &judged.lengths_m[1..],
+    ));
     let largest_speed_mps = judged.sampled[0]
         .speeds_mps
         .iter()
@@ -601,38 +605,6 @@ fn judging_config(
     );
     assumptions.push(said);
     Ok((config, max_turn_rate_rad_s))
-}
-
-/// The risk-of-collision distance the judgement rests on, in words
-/// (decision 50): open sea or the sea room, and each target's distance.
-fn risk_distance_said(config: &PlannerConfig, judged: &Judged<'_>) -> String {
-    let rules = &config.rules;
-    let own_length_m = judged.lengths_m[0];
-    let distances: Vec<String> = judged.lengths_m[1..]
-        .iter()
-        .map(|target_length_m| {
-            format!(
-                "{:.0}",
-                rules.risk_distance_m(own_length_m, *target_length_m)
-            )
-        })
-        .collect();
-    let water = rules.risk_distance.sea_room_m.map_or_else(
-        || "open sea (no sea room given: --sea-room-m or the scenario's planner.sea_room_nm)".to_owned(),
-        |sea_room_m| {
-            format!(
-                "confined water, sea room {sea_room_m:.0} m (at most {:.2} of it, never under d_th {:.0} m between the hulls)",
-                rules.risk_distance.sea_room_fraction, rules.risk_distance.clearance_floor_m
-            )
-        },
-    );
-    format!(
-        "risk of collision: a predicted miss under {} m with each target (decision 50: {:.0} m, or {} times the larger length up to {:.0} m; {water}; from the lengths above)",
-        distances.join(", "),
-        rules.risk_cpa_m,
-        rules.risk_distance.length_factor,
-        rules.risk_distance.cap_m,
-    )
 }
 
 /// A vessel's resampled track as states on the clock.

@@ -14,6 +14,7 @@ pub(crate) mod observation;
 pub(crate) use observation::DEFAULT_MAX_SPEED_KN;
 pub(crate) mod output;
 pub(crate) mod resample;
+pub(crate) mod risk;
 pub(crate) mod tracks;
 
 use crate::console;
