@@ -385,6 +385,7 @@ mod tests {
             nearest_index: Some(NearestIndex::RTree),
             mtd_nm: Some(4.0),
             risk_cpa_nm: Some(0.5),
+            sea_room_nm: Some(0.8),
             head_on_half_width_deg: Some(10.0),
             abaft_beam_deg: Some(110.0),
             passed_angle_deg: Some(100.0),
@@ -417,6 +418,8 @@ mod tests {
         let rules = config.rules;
         assert!(close(rules.mtd_m, 4.0 * 1852.0));
         assert!(close(rules.risk_cpa_m, 926.0));
+        assert!(close(rules.risk_distance.sea_room_m.expect("set"), 0.8 * 1852.0));
+        assert!(close(rules.risk_distance.clearance_floor_m, 100.0));
         assert!(close(rules.head_on_half_width_rad, 10f64.to_radians()));
         assert!(close(rules.abaft_beam_rad, 110f64.to_radians()));
         assert!(close(rules.passed_angle_rad, 100f64.to_radians()));
