@@ -396,7 +396,7 @@ mod tests {
             apparent_turn_deg: Some(35.0),
             instant_turns: Some(true),
         };
-        assert_eq!(settings.set_numbers().len(), 21);
+        assert_eq!(settings.set_numbers().len(), 22);
         let config = settings.apply_to(PlannerConfig::default());
         config.validate().expect("valid");
         assert_eq!(config.clearance_m, 100.0);
