@@ -139,6 +139,7 @@ mod tests {
     use crate::RuleParameters;
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn open_sea_keeps_one_mile_up_to_289_m() {
         let rules = RuleParameters::default();
         for (own, target) in [(20.0, 20.0), (100.0, 250.0), (289.0, 50.0)] {
@@ -150,6 +151,7 @@ mod tests {
     }
 
     #[test]
+    #[expect(clippy::float_cmp, reason = "the test pins exact results")]
     fn sea_room_shrinks_it_never_under_d_th_between_the_hulls() {
         let mut rules = RuleParameters::default();
         rules.risk_distance.sea_room_m = Some(1500.0);

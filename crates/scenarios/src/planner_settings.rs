@@ -418,7 +418,10 @@ mod tests {
         let rules = config.rules;
         assert!(close(rules.mtd_m, 4.0 * 1852.0));
         assert!(close(rules.risk_cpa_m, 926.0));
-        assert!(close(rules.risk_distance.sea_room_m.expect("set"), 0.8 * 1852.0));
+        assert!(close(
+            rules.risk_distance.sea_room_m.expect("set"),
+            0.8 * 1852.0
+        ));
         assert!(close(rules.risk_distance.clearance_floor_m, 100.0));
         assert!(close(rules.head_on_half_width_rad, 10f64.to_radians()));
         assert!(close(rules.abaft_beam_rad, 110f64.to_radians()));

@@ -372,7 +372,7 @@ pub(crate) fn rebuild(
         &scenario,
         &clock,
         &judged,
-        config,
+        &config,
         max_turn_rate_rad_s,
         options.goal_tolerance_m,
     );
@@ -625,7 +625,7 @@ fn recorded_run(
     scenario: &Scenario,
     clock: &Clock,
     judged: &Judged<'_>,
-    config: PlannerConfig,
+    config: &PlannerConfig,
     max_turn_rate_rad_s: Option<f64>,
     goal_tolerance_m: f64,
 ) -> SimulationRecord {
@@ -660,7 +660,7 @@ fn recorded_run(
             .collect(),
         plans: Vec::new(),
         plans_kept: Vec::new(),
-        config,
+        config: *config,
         max_turn_rate_rad_s,
         observations: Vec::new(),
         reached_goal: arrival_time_s.is_some(),
