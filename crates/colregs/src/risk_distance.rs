@@ -4,9 +4,9 @@
 //! Rule 7 leaves the distance to "the prevailing circumstances and
 //! conditions"; a fixed 1 nm makes two harbour launches passing 0.6 nm apart
 //! in a river an encounter with duties, and gives a 300 m ship and a 20 m
-//! launch the same distance. The one rule, [`RuleParameters::risk_distance_m`]:
+//! launch the same distance. The one rule, [`RuleParameters::risk_distance_m`](crate::RuleParameters::risk_distance_m):
 //!
-//! 1. **Open sea**: the larger of [`risk_cpa_m`](RuleParameters::risk_cpa_m)
+//! 1. **Open sea**: the larger of [`risk_cpa_m`](crate::RuleParameters::risk_cpa_m)
 //!    (1 nm: the mariners' open-sea passing distance; Goodwin 1975 measured
 //!    the domain of North Sea ships at 0.7 nm to port, 0.85 nm to starboard
 //!    and 0.45 nm astern) and [`length_factor`](RiskDistanceRule::length_factor)
