@@ -90,6 +90,7 @@ fn judge_csv(
         length_m: length_m.unwrap_or(defaults.length_m),
         max_turn_rate_deg_s,
         max_speed_kn: max_speed_kn.unwrap_or(defaults.max_speed_kn),
+        sea_room_m: defaults.sea_room_m,
     };
     for (name, value) in [
         ("max_gap_s", Some(options.max_gap_s)),

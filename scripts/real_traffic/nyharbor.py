@@ -28,6 +28,11 @@ one pair of vessels per run, in a CSV that `vorrt judge` reads
    whose limit is not known, and the encounter verdicts;
 4. cut: the real pairs of (3) with every track cut at the closest
    approach: an unfinished encounter must be undecided, not passed.
+
+`--sea-room-m M` passes the harbour's sea room to `vorrt judge` (decision
+50: the risk-of-collision distance is then at most a quarter of it, never
+under d_th between the hulls); `--real-only` judges the real pairs (3)
+alone. The summary counts the real pairs' findings by kind.
 """
 
 import argparse
@@ -36,7 +41,7 @@ import json
 import math
 import random
 import subprocess
-from collections import defaultdict
+from collections import Counter, defaultdict
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -188,11 +193,14 @@ def straight(track, rng):
     return result
 
 
+SEA_ROOM = []
+
+
 def judge(vorrt, csv_path, ownship, out_dir):
     """Runs `vorrt judge`; returns judgement.json, or None when it refused
     or judged no target (the pair's tracks overlap too little)."""
     run = subprocess.run(
-        [vorrt, "judge", str(csv_path), "--ownship", ownship, "--out", str(out_dir)],
+        [vorrt, "judge", str(csv_path), "--ownship", ownship, "--out", str(out_dir), *SEA_ROOM],
         capture_output=True,
         text=True,
     )
@@ -217,7 +225,11 @@ def main():
     parser.add_argument("--csv", required=True, help="NYHarbor_2020_06_30_first_hour.csv")
     parser.add_argument("--out", required=True, help="output folder")
     parser.add_argument("--seed", type=int, default=31)
+    parser.add_argument("--sea-room-m", type=float, help="the sea room given to vorrt judge (decision 50)")
+    parser.add_argument("--real-only", action="store_true", help="judge the real pairs only")
     args = parser.parse_args()
+    if args.sea_room_m is not None:
+        SEA_ROOM.extend(["--sea-room-m", str(args.sea_room_m)])
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     fixes, static = read(args.csv)
@@ -240,12 +252,18 @@ def main():
     counts["moving_vessels"] = len(moving)
     counts["resting_vessels"] = len(resting)
     details = []
+    kinds = Counter()
     for index, (a, b, near) in enumerate(pairs):
         own_name = f"{static[a]['name']} ({a})"
         # 1: straight ownship with jitter.
         path = out / f"straight-{index:03}.csv"
-        write_pair(path, [(a, straight(fixes[a], rng)), (b, fixes[b])], static)
-        judgement = judge(args.vorrt, path, own_name, out / f"straight-{index:03}")
+        if args.real_only:
+            path = None
+        straight_track = straight(fixes[a], rng)
+        judgement = None
+        if path is not None:
+            write_pair(path, [(a, straight_track), (b, fixes[b])], static)
+            judgement = judge(args.vorrt, path, own_name, out / f"straight-{index:03}")
         if judgement is not None:
             counts["straight_judged"] += 1
             invented = sorted(TURN_FINDINGS & set(findings(judgement)))
@@ -265,6 +283,8 @@ def main():
         counts["real_length_unknown"] += static[a]["length_m"] is None
         target = judgement["targets"][0]
         counts["real_encounters"] += target["encounter"] != "none"
+        counts["real_with_finding"] += bool(findings(judgement))
+        kinds.update(set(findings(judgement)))
         counts["real_turn_finding"] += bool(TURN_FINDINGS & set(findings(judgement)))
         counts["real_action_finding"] += bool(ACTION_FINDINGS & set(findings(judgement)))
         counts["real_no_action"] += "no_action" in findings(judgement)
@@ -286,7 +306,7 @@ def main():
         )
         # 4: cut at the closest approach.
         cut = [(m, [fix for fix in fixes[m] if fix[0] <= near[1]]) for m in (a, b)]
-        if min(len(track) for _, track in cut) >= 3:
+        if not args.real_only and min(len(track) for _, track in cut) >= 3:
             path = out / f"cut-{index:03}.csv"
             write_pair(path, cut, static)
             judgement = judge(args.vorrt, path, own_name, out / f"cut-{index:03}")
@@ -300,7 +320,7 @@ def main():
                     "clearance_kept"
                 ]
     # 2: moving vessel and one at rest.
-    for index, (a, b, near) in enumerate(rest_pairs):
+    for index, (a, b, near) in enumerate([] if args.real_only else rest_pairs):
         path = out / f"rest-{index:03}.csv"
         write_pair(path, [(a, fixes[a]), (b, fixes[b])], static)
         judgement = judge(args.vorrt, path, f"{static[a]['name']} ({a})", out / f"rest-{index:03}")
@@ -313,10 +333,16 @@ def main():
         counts["rest_undecided"] += bool(judgement.get("undecided"))
     counts["pairs_within_1nm"] = len(pairs)
     counts["rest_pairs_within_1nm"] = len(rest_pairs)
-    summary = {"counts": dict(sorted(counts.items())), "pairs": details}
+    summary = {
+        "counts": dict(sorted(counts.items())),
+        "real_pairs_by_finding": dict(sorted(kinds.items())),
+        "pairs": details,
+    }
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     for key, value in sorted(counts.items()):
         print(f"{key:42} {value}")
+    for key, value in sorted(kinds.items()):
+        print(f"real pairs with {key:25} {value}")
 
 
 if __name__ == "__main__":

@@ -50,6 +50,9 @@ pub struct JudgeOptions {
     /// A fix farther from the vessel's last than this speed allows is a
     /// jump, rejected, knots (`--max-speed-kn`).
     pub max_speed_kn: f64,
+    /// The width of navigable water, metres (`--sea-room-m`); `None`: the
+    /// scenario's, else open sea (decision 50).
+    pub sea_room_m: Option<f64>,
 }
 
 impl Default for JudgeOptions {
@@ -63,6 +66,7 @@ impl Default for JudgeOptions {
             length_m: vorrt_ais::DEFAULT_LENGTH_M,
             max_turn_rate_deg_s: None,
             max_speed_kn: judge::DEFAULT_MAX_SPEED_KN,
+            sea_room_m: None,
         }
     }
 }
@@ -91,6 +95,7 @@ pub fn judge_csv(
         default_length_m: options.length_m,
         max_turn_rate_deg_s: options.max_turn_rate_deg_s,
         max_speed_kn: options.max_speed_kn,
+        sea_room_m: options.sea_room_m,
     };
     let (_, _, judgement) = judge::judge_text(text, TracksFormat::Csv, scenario, &options)
         .map_err(|error| error.to_string())?;

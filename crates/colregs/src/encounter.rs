@@ -191,6 +191,12 @@ pub struct EncounterLatch {
     pub reference_speed_mps: f64,
     /// When the encounter began, seconds.
     pub latched_at_s: f64,
+    /// The pair's risk-of-collision distance when the encounter began
+    /// ([`RuleParameters::risk_distance_m`](crate::RuleParameters::risk_distance_m),
+    /// decision 50), metres; `None` for a latch made without the target's
+    /// length (then the distance for vessels of no length is used).
+    #[serde(default)]
+    pub risk_distance_m: Option<f64>,
 }
 
 impl EncounterLatch {
@@ -202,7 +208,25 @@ impl EncounterLatch {
             reference_course_rad: own.course_rad,
             reference_speed_mps: own.speed_mps,
             latched_at_s: time_s,
+            risk_distance_m: None,
         }
+    }
+
+    /// The same latch, made with the pair's risk-of-collision distance.
+    #[must_use]
+    pub fn with_risk_distance(self, risk_distance_m: f64) -> Self {
+        Self {
+            risk_distance_m: Some(risk_distance_m),
+            ..self
+        }
+    }
+
+    /// The risk-of-collision distance the encounter is judged with: the
+    /// pair's, else that of `parameters` for vessels of no length.
+    #[must_use]
+    pub fn risk_distance_or(&self, parameters: &crate::RuleParameters) -> f64 {
+        self.risk_distance_m
+            .unwrap_or_else(|| parameters.risk_distance_m(0.0, 0.0))
     }
 }
 

@@ -16,10 +16,12 @@ use crate::vessel::VesselState;
 /// [`passed_angle_rad`](RuleParameters::passed_angle_rad) away from the line of
 /// sight — both of them in head-on and crossing, either of them in the
 /// overtaking encounters (the overtaken vessel keeps pointing at the other).
-/// A range that opens while already wider than
-/// [`risk_cpa_m`](RuleParameters::risk_cpa_m) also ends it: the CPA is now
-/// and it is no risk (vessels running side by side would otherwise stay
-/// latched for ever).
+/// A range that opens while already wider than the risk-of-collision
+/// distance also ends it: the CPA is now and it is no risk (vessels running
+/// side by side would otherwise stay latched for ever). Ownship's length is
+/// not known here, so the distance is that for the target's length alone
+/// ([`RuleParameters::risk_distance_m`]`(0, target length)`, decision 50),
+/// never more than the pair's: 1 nm in open sea up to 289 m.
 #[must_use]
 pub fn has_passed(
     own: &VesselState,
@@ -56,7 +58,7 @@ pub fn has_passed_moving(
     if !opening {
         return false;
     }
-    if line_of_sight.length() > parameters.risk_cpa_m {
+    if line_of_sight.length() > parameters.risk_distance_m(0.0, target.length_m) {
         return true;
     }
     let points_away = |velocity: glam::DVec2, towards: glam::DVec2| {
@@ -199,7 +201,11 @@ fn latch_step(
                 // would be released at once and latched again at the next
                 // step, for ever.
                 encounter if passed(encounter) => None,
-                encounter => Some(EncounterLatch::new(encounter, &seen, time_s)),
+                encounter => Some(
+                    EncounterLatch::new(encounter, &seen, time_s).with_risk_distance(
+                        parameters.risk_distance_m(own.length_m, target.length_m),
+                    ),
+                ),
             }
         }
     }

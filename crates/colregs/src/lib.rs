@@ -11,6 +11,7 @@ pub mod parameters;
 pub mod passing;
 mod port_turn_gate;
 pub mod risk;
+pub mod risk_distance;
 pub mod rule10;
 pub mod rules;
 pub mod vessel;
@@ -33,6 +34,7 @@ pub use maneuver::{
 pub use parameters::RuleParameters;
 pub use passing::{PassingSide, crosses_ahead, passing_side};
 pub use risk::{RiskAssessment, assess_risk};
+pub use risk_distance::RiskDistanceRule;
 pub use vessel::VesselState;
 
 // What the public signatures take, so that this crate alone is enough.

@@ -424,7 +424,8 @@ pub fn check_alteration(
 ///   made (`altered_rad` under [`apparent_turn_rad`](RuleParameters::apparent_turn_rad)),
 ///   a candidate that still holds the reference course (within
 ///   [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad)) while its
-///   closest approach is under [`risk_cpa_m`](RuleParameters::risk_cpa_m)
+///   closest approach is under the encounter's risk-of-collision distance
+///   ([`EncounterLatch::risk_distance_or`], decision 50: 1 nm in open sea)
 ///   must be farther than [`give_way_action_range_m`](RuleParameters::give_way_action_range_m).
 ///   With `reduction_acts`, a candidate at a readily apparent reduction of
 ///   the reference speed ([`rules::is_readily_apparent_reduction`]) is not
@@ -497,7 +498,7 @@ pub fn check_action(
                 relative_velocity,
                 f64::INFINITY,
             );
-            if rules::is_close_approach(&cpa, parameters) {
+            if rules::is_close_approach(&cpa, latch.risk_distance_or(parameters)) {
                 return Err(ManeuverViolation::LateAction);
             }
         }

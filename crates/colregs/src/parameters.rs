@@ -4,6 +4,7 @@
 //! value is out of range.
 
 use crate::error::ColregsError;
+use crate::risk_distance::RiskDistanceRule;
 use serde::{Deserialize, Serialize};
 
 /// Thresholds used to detect risk, classify encounters and judge manoeuvres.
@@ -14,8 +15,14 @@ pub struct RuleParameters {
     /// this is not yet an encounter. Default 5 nm (9260 m).
     pub mtd_m: f64,
     /// A CPA distance under this, with the target inside MTD and the CPA ahead
-    /// in time, is a risk of collision. Default 1 nm (1852 m).
+    /// in time, is a risk of collision, for vessels up to 289 m in open sea.
+    /// Default 1 nm (1852 m). The distance the rule book judges with is
+    /// [`risk_distance_m`](Self::risk_distance_m), which scales it with the
+    /// vessels' length and the sea room ([`risk_distance`](Self::risk_distance)).
     pub risk_cpa_m: f64,
+    /// How the risk-of-collision distance scales with the vessels' lengths
+    /// and the sea room (decision 50, [`crate::risk_distance`]).
+    pub risk_distance: RiskDistanceRule,
     /// Half-width of the head-on sector around dead ahead (rule 14), radians.
     /// Default 13° (Woerner; Minne).
     pub head_on_half_width_rad: f64,
@@ -55,6 +62,7 @@ impl Default for RuleParameters {
         Self {
             mtd_m: 5.0 * 1852.0,
             risk_cpa_m: 1852.0,
+            risk_distance: RiskDistanceRule::default(),
             head_on_half_width_rad: 13f64.to_radians(),
             abaft_beam_rad: 112.5f64.to_radians(),
             passed_angle_rad: 112.5f64.to_radians(),
@@ -69,6 +77,27 @@ impl Default for RuleParameters {
 }
 
 impl RuleParameters {
+    /// The risk-of-collision distance (rule 7, decision 50) for ownship of
+    /// `own_length_m` and a target of `target_length_m`: a predicted miss
+    /// under it is a risk. [`risk_cpa_m`](Self::risk_cpa_m) in open sea for
+    /// vessels up to 289 m, more for larger ones, less where the sea room is
+    /// known to be confined, never under `d_th` between the hulls
+    /// ([`crate::risk_distance`]).
+    ///
+    /// ```
+    /// use vorrt_colregs::RuleParameters;
+    /// let mut rules = RuleParameters::default();
+    /// assert_eq!(rules.risk_distance_m(100.0, 200.0), 1852.0);
+    /// rules.risk_distance.sea_room_m = Some(1200.0);
+    /// assert_eq!(rules.risk_distance_m(20.0, 20.0), 300.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn risk_distance_m(&self, own_length_m: f64, target_length_m: f64) -> f64 {
+        self.risk_distance
+            .distance_m(self.risk_cpa_m, own_length_m, target_length_m)
+    }
+
     /// Checks every field: distances positive and finite, angles in range.
     ///
     /// # Errors
@@ -131,6 +160,13 @@ impl RuleParameters {
                     expected: "an angle in its documented range (see RuleParameters)",
                 });
             }
+        }
+        if let Err((field, value, expected)) = self.risk_distance.check() {
+            return Err(ColregsError::InvalidParameter {
+                field,
+                value,
+                expected,
+            });
         }
         Ok(())
     }

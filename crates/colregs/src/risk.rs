@@ -1,8 +1,10 @@
 //! Risk of collision (paper §III-A; rule 7).
 //!
 //! A target is a risk when it is inside the minimum threshold distance (MTD),
-//! the distance at CPA is under [`RuleParameters::risk_cpa_m`] and the CPA lies
-//! ahead in time (`t_cpa > 0`: the vessels are still closing).
+//! the distance at CPA is under the pair's risk-of-collision distance
+//! ([`RuleParameters::risk_distance_m`]: 1 nm in open sea for vessels up to
+//! 289 m, scaled with their lengths and the sea room, decision 50) and the
+//! CPA lies ahead in time (`t_cpa > 0`: the vessels are still closing).
 
 use crate::parameters::RuleParameters;
 use crate::rules::{is_close_approach, within_mtd};
@@ -43,8 +45,10 @@ pub fn assess_risk(
         target.position_m,
         target.velocity_mps(),
     );
-    let at_risk =
-        within_mtd(range_m, parameters) && is_close_approach(&cpa, parameters) && cpa.time_s > 0.0;
+    let risk_distance_m = parameters.risk_distance_m(own.length_m, target.length_m);
+    let at_risk = within_mtd(range_m, parameters)
+        && is_close_approach(&cpa, risk_distance_m)
+        && cpa.time_s > 0.0;
     RiskAssessment {
         range_m,
         cpa,

@@ -66,21 +66,23 @@ pub fn within_mtd(range_m: f64, parameters: &RuleParameters) -> bool {
 /// Rule 7: whether a closest approach (from
 /// [`closest_point_of_approach`](vorrt_geometry::closest_point_of_approach),
 /// at present velocities) is near enough to be a risk of collision: under
-/// [`risk_cpa_m`](RuleParameters::risk_cpa_m). The risk test
-/// ([`assess_risk`](crate::assess_risk)) and the give-way check of early
-/// action ([`check_action`](crate::check_action)) both judge it with this.
+/// `risk_distance_m`, the pair's risk-of-collision distance
+/// ([`RuleParameters::risk_distance_m`], decision 50: 1 nm in open sea for
+/// vessels up to 289 m). The risk test ([`assess_risk`](crate::assess_risk))
+/// and the give-way check of early action
+/// ([`check_action`](crate::check_action)) both judge it with this.
 ///
 /// ```
 /// use vorrt_colregs::{rules::is_close_approach, RuleParameters};
 /// use vorrt_geometry::Cpa;
-/// let params = RuleParameters::default();
-/// assert!(is_close_approach(&Cpa { time_s: 60.0, distance_m: 500.0 }, &params));
-/// assert!(!is_close_approach(&Cpa { time_s: 60.0, distance_m: params.risk_cpa_m }, &params));
+/// let risk_m = RuleParameters::default().risk_distance_m(50.0, 50.0);
+/// assert!(is_close_approach(&Cpa { time_s: 60.0, distance_m: 500.0 }, risk_m));
+/// assert!(!is_close_approach(&Cpa { time_s: 60.0, distance_m: 1852.0 }, risk_m));
 /// ```
 #[inline]
 #[must_use]
-pub fn is_close_approach(cpa: &Cpa, parameters: &RuleParameters) -> bool {
-    cpa.distance_m < parameters.risk_cpa_m
+pub fn is_close_approach(cpa: &Cpa, risk_distance_m: f64) -> bool {
+    cpa.distance_m < risk_distance_m
 }
 
 /// The signed course change from the reference course (the course held when

@@ -158,6 +158,7 @@ fn latch(
         reference_course_rad,
         reference_speed_mps,
         latched_at_s: 0.0,
+        risk_distance_m: None,
     }
 }
 

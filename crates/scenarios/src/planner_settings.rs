@@ -73,6 +73,12 @@ pub struct PlannerSettings {
     /// (default 1).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub risk_cpa_nm: Option<f64>,
+    /// The width of navigable water the scenario's vessels are in, nautical
+    /// miles, where the water is confined: the risk-of-collision distance is
+    /// then at most a quarter of it, never under `d_th` between the hulls
+    /// (decision 50). Default: open sea.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sea_room_nm: Option<f64>,
     /// Half-width of the head-on sector, degrees (default 13).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub head_on_half_width_deg: Option<f64>,
@@ -133,6 +139,7 @@ impl PlannerSettings {
             ("time_budget_s", self.time_budget_s),
             ("mtd_nm", self.mtd_nm),
             ("risk_cpa_nm", self.risk_cpa_nm),
+            ("sea_room_nm", self.sea_room_nm),
             ("head_on_half_width_deg", self.head_on_half_width_deg),
             ("abaft_beam_deg", self.abaft_beam_deg),
             ("passed_angle_deg", self.passed_angle_deg),
@@ -159,6 +166,9 @@ impl PlannerSettings {
         let mut config = base;
         self.apply_search_to(&mut config);
         self.apply_rules_to(&mut config.rules);
+        // The risk-of-collision distance never goes under d_th between the
+        // hulls (decision 50): the scenario's d_th.
+        config.rules.risk_distance.clearance_floor_m = config.clearance_m;
         config
     }
 
@@ -223,6 +233,9 @@ impl PlannerSettings {
             self.risk_cpa_nm,
             units::nautical_miles_to_m,
         );
+        if let Some(sea_room_nm) = self.sea_room_nm {
+            rules.risk_distance.sea_room_m = Some(units::nautical_miles_to_m(sea_room_nm));
+        }
         set_si(
             &mut rules.head_on_half_width_rad,
             self.head_on_half_width_deg,
@@ -312,6 +325,14 @@ fn to_file_units(field: &str, value: f64, expected: &str) -> (String, f64, Strin
             units::m_to_nautical_miles(value),
             expected.replace("a finite number", "a finite number of nautical miles"),
         ),
+        "risk_distance.sea_room_m" => (
+            "sea_room_nm".into(),
+            units::m_to_nautical_miles(value),
+            expected.replace(
+                "a finite number of metres",
+                "a finite number of nautical miles",
+            ),
+        ),
         "stand_on_speed_tolerance_mps" => (
             "stand_on_speed_tolerance_kn".into(),
             units::mps_to_knots(value),
@@ -364,6 +385,7 @@ mod tests {
             nearest_index: Some(NearestIndex::RTree),
             mtd_nm: Some(4.0),
             risk_cpa_nm: Some(0.5),
+            sea_room_nm: Some(0.8),
             head_on_half_width_deg: Some(10.0),
             abaft_beam_deg: Some(110.0),
             passed_angle_deg: Some(100.0),
@@ -374,7 +396,7 @@ mod tests {
             apparent_turn_deg: Some(35.0),
             instant_turns: Some(true),
         };
-        assert_eq!(settings.set_numbers().len(), 21);
+        assert_eq!(settings.set_numbers().len(), 22);
         let config = settings.apply_to(PlannerConfig::default());
         config.validate().expect("valid");
         assert_eq!(config.clearance_m, 100.0);
@@ -396,6 +418,11 @@ mod tests {
         let rules = config.rules;
         assert!(close(rules.mtd_m, 4.0 * 1852.0));
         assert!(close(rules.risk_cpa_m, 926.0));
+        assert!(close(
+            rules.risk_distance.sea_room_m.expect("set"),
+            0.8 * 1852.0
+        ));
+        assert!(close(rules.risk_distance.clearance_floor_m, 100.0));
         assert!(close(rules.head_on_half_width_rad, 10f64.to_radians()));
         assert!(close(rules.abaft_beam_rad, 110f64.to_radians()));
         assert!(close(rules.passed_angle_rad, 100f64.to_radians()));

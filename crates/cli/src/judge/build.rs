@@ -36,6 +36,8 @@ pub(crate) struct Options {
     /// A fix farther from the last kept than this speed allows is a jump,
     /// rejected, knots.
     pub(crate) max_speed_kn: f64,
+    /// The sea room, metres (overrides the scenario's; decision 50).
+    pub(crate) sea_room_m: Option<f64>,
 }
 
 /// One judged vessel, as the input described it.
@@ -375,7 +377,7 @@ pub(crate) fn rebuild(
         &scenario,
         &clock,
         &judged,
-        config,
+        &config,
         max_turn_rate_rad_s,
         options.goal_tolerance_m,
     );
@@ -570,7 +572,7 @@ fn judging_config(
     if let Some(d_th_m) = options.d_th_m {
         scenario.planner.clearance_m = Some(d_th_m);
     }
-    let config = scenario
+    let mut config = scenario
         .planner_config()
         .map_err(|error| bad(error.to_string()))?;
     if options.d_th_m.is_none() && scenario.planner.clearance_m.is_none() {
@@ -579,6 +581,14 @@ fn judging_config(
             config.clearance_m
         ));
     }
+    if let Some(sea_room_m) = options.sea_room_m {
+        config.rules.risk_distance.sea_room_m = Some(sea_room_m);
+    }
+    assumptions.push(super::risk::risk_distance_said(
+        &config.rules,
+        judged.lengths_m[0],
+        &judged.lengths_m[1..],
+    ));
     let largest_speed_mps = judged.sampled[0]
         .speeds_mps
         .iter()
@@ -620,7 +630,7 @@ fn recorded_run(
     scenario: &Scenario,
     clock: &Clock,
     judged: &Judged<'_>,
-    config: PlannerConfig,
+    config: &PlannerConfig,
     max_turn_rate_rad_s: Option<f64>,
     goal_tolerance_m: f64,
 ) -> SimulationRecord {
@@ -655,7 +665,7 @@ fn recorded_run(
             .collect(),
         plans: Vec::new(),
         plans_kept: Vec::new(),
-        config,
+        config: *config,
         max_turn_rate_rad_s,
         observations: Vec::new(),
         reached_goal: arrival_time_s.is_some(),

@@ -14,6 +14,7 @@ pub(crate) mod observation;
 pub(crate) use observation::DEFAULT_MAX_SPEED_KN;
 pub(crate) mod output;
 pub(crate) mod resample;
+pub(crate) mod risk;
 pub(crate) mod tracks;
 
 use crate::console;
@@ -104,6 +105,16 @@ pub(crate) struct JudgeArgs {
     /// jump, rejected, knots.
     #[arg(long, value_name = "KN", default_value_t = observation::DEFAULT_MAX_SPEED_KN)]
     pub(crate) max_speed_kn: f64,
+    /// The width of navigable water the vessels are in, metres (confined
+    /// water): the risk-of-collision distance is then at most a quarter of
+    /// it, never under d_th between the hulls [default: the scenario's
+    /// planner.sea_room_nm, else open sea].
+    #[expect(
+        clippy::doc_markdown,
+        reason = "clap help text, printed verbatim by --help"
+    )]
+    #[arg(long, value_name = "M")]
+    pub(crate) sea_room_m: Option<f64>,
 }
 
 /// The format of `path`: the one given, else by extension, else by content.
@@ -183,6 +194,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         ("step-s", args.step_s),
         ("max-turn-rate-deg-s", args.max_turn_rate_deg_s),
         ("max-speed-kn", Some(args.max_speed_kn)),
+        ("sea-room-m", args.sea_room_m),
     ] {
         if let Some(value) = value {
             positive(name, value)?;
@@ -204,6 +216,7 @@ pub(crate) fn judge_command(args: &JudgeArgs) -> Result<ExitStatus, CliError> {
         default_length_m: args.length_m,
         max_turn_rate_deg_s: args.max_turn_rate_deg_s,
         max_speed_kn: args.max_speed_kn,
+        sea_room_m: args.sea_room_m,
     };
     let (rebuilt, evaluation, judgement) = judge_text(&text, format, scenario, &options)?;
     let dir = args.out.clone().unwrap_or_else(|| {

@@ -165,6 +165,7 @@
 //! | [`stand_on_speed_tolerance_mps`](crate::RuleParameters::stand_on_speed_tolerance_mps) | 1 m/s | stand-on drift (NTNU evaluator) |
 //! | [`stand_on_action_range_m`](crate::RuleParameters::stand_on_action_range_m) | 2 nm | rule 17(a)(ii) action range (Woerner 2019) |
 //! | [`clearance_m`](crate::ScoringParameters::clearance_m) | 200 m | `d_th` (the paper's open-sea value; a run passes its own) |
+//! | [`risk_distance`](crate::RuleParameters::risk_distance) | 1 nm, 6.4 lengths up to 2 nm, ¼ of the sea room | the risk-of-collision distance by the pair's lengths and the sea room, never under `d_th` between the hulls (Goodwin 1975; Fujii and Tanaka 1971; decision 50) |
 //! | [`crossed_ahead_range_m`](crate::ScoringParameters::crossed_ahead_range_m) | 1 nm | crossing ahead of the bow beyond the risk-of-collision miss (`risk_cpa_m`) is an already-clear pass (decision 42) |
 //! | [`max_turn_rate_rad_s`](ObservedParameters::max_turn_rate_rad_s) | none | the vessel's limit, when the recording has one |
 //! | [`noise`](ObservedParameters::noise) | 0.3°, 600 s, 6 σ, 8 σ | course-jitter budget, longest window, detectable change and action detection above the jitter (decision 31) |
@@ -210,6 +211,8 @@ mod quality;
 #[cfg(test)]
 mod real_tests;
 mod recording;
+#[cfg(test)]
+mod risk_distance_tests;
 mod status;
 #[cfg(test)]
 mod tests;

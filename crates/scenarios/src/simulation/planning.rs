@@ -475,6 +475,7 @@ mod tests {
             reference_course_rad: 0.0,
             reference_speed_mps: 6.0,
             latched_at_s: 0.0,
+            risk_distance_m: None,
         }
     }
 
