@@ -80,22 +80,9 @@ impl Findings {
         if no_time_to_act {
             return;
         }
-        // Rule 13(a), (d): an overtaking vessel keeps out of the way "until
-        // she is finally past and clear"; it is judged by the whole pass
-        // (decision 50): one that kept d_th between the hulls and crossed
-        // no nearer ahead than d_th owed no demonstrated alteration, one
-        // that did not owed one. Head-on and crossing: a pass predicted at
-        // the latch to keep d_th owes no action (decision 42).
-        let owed = if latch.encounter == Encounter::Overtaking {
-            !measured.clearance_kept
-                || measured
-                    .crossed_ahead_distance_m
-                    .is_some_and(|d| d < scoring.clearance_m)
-        } else {
-            measured.action_required
-        };
         match (measured.action_time_s, measured.action_range_m) {
-            _ if !owed => {}
+            // A pass predicted to keep d_th owes no action (decision 42).
+            _ if !measured.action_required => {}
             (Some(action_time_s), Some(range_m)) => {
                 let early_range_m = scoring.late_action_range_m;
                 // Within the reaction time of the latch an action is never

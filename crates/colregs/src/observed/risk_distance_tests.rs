@@ -128,24 +128,29 @@ fn names(target: &ObservedEncounter) -> Vec<&'static str> {
 }
 
 #[test]
-fn an_overtaking_that_keeps_out_of_the_way_is_not_faulted_for_the_size_of_its_alteration() {
-    // Set up to pass 150 m off (under d_th between the hulls), ownship
-    // opens the pass with a 15° alteration to port and passes far clear:
-    // rule 13 asks it to keep out of the way until past and clear, which
-    // it did (before decision 50: `late_action` and `action_not_apparent`).
+fn an_overtaking_vessel_owes_a_readily_apparent_action() {
+    // Rule 13(a) puts the overtaking vessel under Section II, and so under
+    // rules 16 and 8(b): set up to pass 150 m off (under d_th between the
+    // hulls), a 15 degree alteration that opens the pass is still not
+    // readily apparent (decision 50 keeps this reading).
     let target = judged(&overtaking(150.0, -15.0), &ObservedParameters::default());
     assert_eq!(target.latch.expect("risk").encounter, Encounter::Overtaking);
     assert!(target.clearance_kept);
-    assert!(target.findings.is_empty(), "{:?}", names(&target));
-    // Holding on and passing 150 m off is not keeping out of the way: the
-    // clearance broken and the action that was owed not taken.
+    assert!(
+        names(&target).contains(&"action_not_apparent"),
+        "{:?}",
+        names(&target)
+    );
+    // Holding on and passing 150 m off: the clearance broken and the
+    // action that was owed not taken.
     let held = judged(&overtaking(150.0, 0.0), &ObservedParameters::default());
     let found = names(&held);
     assert!(
         found.contains(&"clearance_violated") && found.contains(&"no_action"),
         "{found:?}"
     );
-    // The parallel pass 0.2 nm off has no finding, as before (decision 42).
+    // The parallel pass 0.2 nm off has no finding (decision 42): no
+    // action is demanded of a pass that keeps d_th.
     let parallel = judged(
         &overtaking(0.2 * 1852.0, 0.0),
         &ObservedParameters::default(),
