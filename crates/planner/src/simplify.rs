@@ -350,7 +350,10 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                     // (an overtaking vessel once its passing distance is
                     // open, rule 13 and decision 15), then the goal.
                     let may_resume = |hold: &SimplifiedLeg| {
-                        may_resume_course && resumed.is_none() && only_overtaking(&hold.state)
+                        may_resume_course
+                            && resumed.is_none()
+                            && hold.leg.length_m() <= RESUME_WITHIN_M
+                            && only_overtaking(&hold.state)
                     };
                     if let Some(hold) = hold.filter(may_resume) {
                         resumed = alter_hold_return(
@@ -415,6 +418,12 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     }
     best.map(|(_, _, legs)| legs)
 }
+
+/// The longest hold of an alteration, metres, after which the course held
+/// before it is resumed (decision 55): 35° held 2 km opens 1.1 km, more
+/// than any passing distance asked; a longer hold is waiting for other
+/// vessels, not opening the passing distance.
+const RESUME_WITHIN_M: f64 = 2000.0;
 
 /// The courses to port of the goal's bearing that a return refused for
 /// turning to port onto a vessel tries instead, degrees: to pass astern of
