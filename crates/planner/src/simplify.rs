@@ -51,7 +51,9 @@ use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, MotionModel, Pose};
 
 mod hold;
-use hold::{Grade, HoldOutcome, RETURN_BISECTIONS, hold_and_return, only_overtaking};
+use hold::{
+    Grade, HoldOutcome, RESUME_WITHIN_M, RETURN_BISECTIONS, hold_and_return, only_overtaking,
+};
 
 /// When the next branch point cannot be reached by a valid leg, how many
 /// points beyond it are tried before the simplification gives up.
@@ -418,12 +420,6 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     }
     best.map(|(_, _, legs)| legs)
 }
-
-/// The longest hold of an alteration, metres, after which the course held
-/// before it is resumed (decision 55): 35° held 2 km opens 1.1 km, more
-/// than any passing distance asked; a longer hold is waiting for other
-/// vessels, not opening the passing distance.
-const RESUME_WITHIN_M: f64 = 2000.0;
 
 /// The courses to port of the goal's bearing that a return refused for
 /// turning to port onto a vessel tries instead, degrees: to pass astern of

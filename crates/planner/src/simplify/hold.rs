@@ -112,3 +112,9 @@ pub(super) fn only_overtaking(state: &EncounterState) -> bool {
         .flatten()
         .all(|latch| latch.encounter == Encounter::Overtaking)
 }
+
+/// The longest hold of an alteration, metres, after which the course held
+/// before it is resumed (decision 55): 35° held 2 km opens 1.1 km, more
+/// than any passing distance asked; a longer hold is waiting for other
+/// vessels, not opening the passing distance.
+pub(super) const RESUME_WITHIN_M: f64 = 2000.0;
