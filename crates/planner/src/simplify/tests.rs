@@ -208,3 +208,70 @@ fn the_return_in_a_crossing_begins_once_the_vessel_is_past_and_clear() {
     );
     assert!(legs.last().expect("legs").leg.end_m().distance(goal_m) < 1e-6);
 }
+
+/// Ownship, north at 6 m/s for a goal 20 km ahead, overtakes a vessel
+/// 2 km ahead on the same course at 4 m/s. Once the passing distance is
+/// open, the course held before the alteration is resumed, parallel to the
+/// overtaken vessel (rule 13, decision 15), and the goal made good from
+/// past it (decision 55): the alteration is held 433 m, not 683 m (before,
+/// the leg to the goal from the alteration's end, 35° then 359°).
+#[test]
+fn an_overtaking_vessel_resumes_its_course_once_its_passing_distance_is_open() {
+    use crate::PlannerConfig;
+    use crate::safety::SafetyChecker;
+    use vorrt_colregs::{Encounter, VesselState, update_latch};
+    use vorrt_jfs::TargetState;
+    let config = PlannerConfig::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let target = VesselState::new(DVec2::new(0.0, 2000.0), 0.0, 4.0, 50.0);
+    let tracks = [TargetState::constant_velocity(target).track()];
+    let goal_m = DVec2::new(0.0, 20_000.0);
+    let checker = SafetyChecker::new(&config, &tracks, own, goal_m, 0.0);
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let start = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    let latch = update_latch(None, &own, &target, 0.0, &config.rules);
+    assert_eq!(
+        latch.map(|latch| latch.encounter),
+        Some(Encounter::Overtaking)
+    );
+    let state = EncounterState {
+        latches: vec![latch],
+        alterations: vec![0.0],
+    };
+    let legs = simplify(
+        &model,
+        &checker,
+        start,
+        Speeds::constant(6.0),
+        &[goal_m],
+        &state,
+    )
+    .expect("a manoeuvre");
+    let described: Vec<String> = legs
+        .iter()
+        .map(|leg| {
+            format!(
+                "{:.0} deg {:.0} m",
+                leg.leg.course_rad.to_degrees(),
+                leg.leg.length_m()
+            )
+        })
+        .collect();
+    assert_eq!(legs.len(), 3, "alter, resume, goal: {described:?}");
+    assert!(legs[0].leg.course_rad > 30f64.to_radians(), "{described:?}");
+    assert!(
+        legs[1].leg.course_rad.abs() < 1e-9,
+        "resumed: {described:?}"
+    );
+    assert!(legs[2].leg.end_m().distance(goal_m) < 1e-6);
+    let sailed_m: f64 = legs.iter().map(|leg| leg.leg.length_m()).sum();
+    assert!(
+        sailed_m < 1.02 * goal_m.length(),
+        "{sailed_m:.0} m sailed: {described:?}"
+    );
+}
