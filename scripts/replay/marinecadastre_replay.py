@@ -17,8 +17,13 @@ crates/scenarios/fixtures/coastal/new_york_harbor_ne10m.geojson) the
 scenario names that land, and vessels whose start position lies inside it
 are left out (moored at a pier the 1:10m coast draws as land; vorrt check
 refuses a target on land). Ownship's service speed is the median of its
-recorded speeds over ground while making way (decision 48). Standard
-library only.
+recorded speeds over ground while making way (decision 48). Where its
+recorded track shows it turning faster than the planner's default limit
+(0.5 deg/s, `vorrt_jfs::MAX_DEFAULT_TURN_RATE_RAD_S`, a large ship's), the
+largest rate of turn between two consecutive reports making way is its
+`max_turn_rate_deg_s` (decision 52: JUSTINE, a 26 m tug, turned round at
+1.3 deg/s; at 0.5 deg/s no turn round fits the channel she was in).
+Standard library only.
 """
 
 import argparse
@@ -134,6 +139,30 @@ def ron_string(text):
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
+# The planner's default rate of turn never exceeds this (deg/s;
+# vorrt_jfs::motion::MAX_DEFAULT_TURN_RATE_RAD_S).
+MAX_DEFAULT_TURN_RATE_DEG_S = 0.5
+
+
+def recorded_turn_rate_deg_s(reports):
+    """The largest rate of turn ownship's recorded track shows (decision
+    52): the change of course over ground between two consecutive reports,
+    both making way with a course available, over the time between them;
+    None when it is no more than the planner's default limit (which then
+    stands) or no pair qualifies. A lower bound of what the vessel can do:
+    the fixes are about a minute apart."""
+    largest = 0.0
+    for before, after in zip(reports, reports[1:]):
+        dt_s = after[0] - before[0]
+        courses = course(before[3]), course(after[3])
+        speeds = speed(before[4]), speed(after[4])
+        if dt_s <= 0 or None in courses or None in speeds or min(speeds) < MAKING_WAY_KN:
+            continue
+        turn_deg = abs((courses[1] - courses[0] + 180.0) % 360.0 - 180.0)
+        largest = max(largest, turn_deg / dt_s)
+    return round(largest, 2) if largest > MAX_DEFAULT_TURN_RATE_DEG_S else None
+
+
 def vessel_ron(name, mmsi, report, length_m, extra=""):
     _, lat, lon, cog, sog = report
     return (
@@ -220,8 +249,12 @@ def main():
     # The human's speed over the passage, not at the start report (decision 48).
     service_kn = service_speed_kn([r for r in own if r[0] >= start_s])
     own_start = start if service_kn is None else start[:4] + (service_kn,)
+    turn_rate = recorded_turn_rate_deg_s([r for r in own if r[0] >= start_s])
+    own_extra = f", goal_lat_lon: ({last[1]}, {last[2]})"
+    if turn_rate is not None:
+        own_extra += f", max_turn_rate_deg_s: {turn_rate}"
     ownship = vessel_ron(used[args.ownship], args.ownship, own_start, lengths.get(args.ownship, DEFAULT_LENGTH_M),
-                         f", goal_lat_lon: ({last[1]}, {last[2]})")
+                         own_extra)
     land = ""
     if args.land_geojson:
         folder = os.path.dirname(os.path.abspath(args.out))
@@ -234,7 +267,9 @@ def main():
             f"// from its report at {start_time} to its last position; {len(kept)} vessels on their recorded tracks.\n"
             f"// Service speed {own_start[4]} kn: the median of its recorded speeds making way"
             f" (decision 48; {speed(start[4])} kn at the start report).\n"
-            "// Left out: " + (", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none") + ".\n"
+            + (f"// Rate of turn {turn_rate} deg/s: the largest its recorded track shows (decision 52).\n"
+               if turn_rate is not None else "")
+            + "// Left out: " + (", ".join(f"{n} {why}" for why, n in sorted(left_out.items())) or "none") + ".\n"
             f"Scenario(\n    name: \"replay-{args.ownship}\",\n    ownship: {ownship},\n    targets: [\n"
             + "".join(f"        {t},\n" for t in targets)
             + f"    ],\n{land}    start_time: \"{start_time}\",\n    recorded_tracks: \"{tracks_name}\",\n)\n"

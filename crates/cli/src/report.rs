@@ -217,7 +217,7 @@ pub struct PlanEventReport {
     /// Simulation time of the call, seconds.
     pub time_s: f64,
     /// Why ownship planned: `initial`, `target_off_prediction`,
-    /// `new_encounter`, `prediction_changed` or `retry`.
+    /// `new_encounter`, `prediction_changed`, `retry` or `past_and_clear`.
     pub trigger: String,
     /// Whether a plan came back.
     pub succeeded: bool,
@@ -251,6 +251,7 @@ impl PlanEventReport {
             PlanTrigger::NewEncounter { .. } => "new_encounter",
             PlanTrigger::PredictionChanged { .. } => "prediction_changed",
             PlanTrigger::Retry => "retry",
+            PlanTrigger::PastAndClear => "past_and_clear",
         };
         Self {
             time_s: event.time_s,

@@ -154,3 +154,30 @@ fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_st
     );
     assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
 }
+
+/// Run 891 of the campaign with 8 COLREGs-obeying targets (seed 11): at
+/// 660 s ownship planned 105° at reduced speed held for an hour, for how
+/// the vessels were predicted; every encounter was released by 1085 s, but
+/// nothing asked again (the plan stayed valid), and the run ran out of time
+/// 22 km from its goal. Once the vessels are past and clear the closed
+/// loop asks for a plan that arrives sooner (`PlanTrigger::PastAndClear`,
+/// decision 52), and the goal is reached.
+#[test]
+fn once_past_and_clear_a_long_hold_is_cut_short() {
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 891).expect("generated");
+    let seed = scenario
+        .seed
+        .expect("a generated scenario carries its seed");
+    let record = simulate(&scenario, seed).expect("valid settings");
+    assert!(
+        record
+            .plans
+            .iter()
+            .any(|event| event.trigger == PlanTrigger::PastAndClear && event.succeeded),
+        "a sooner plan once every vessel was past and clear"
+    );
+    let evaluation = evaluate(&scenario, &record);
+    assert!(evaluation.reached_goal);
+    assert!(!evaluation.collision && evaluation.clearance_kept);
+}

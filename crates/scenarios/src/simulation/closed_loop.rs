@@ -4,7 +4,8 @@
 //! steps, and take its record when done.
 
 use super::planning::{
-    ActivePlan, PlanCall, RetryTimer, follow, plan_now, remaining_legs, replan_trigger,
+    ActivePlan, PlanCall, RetryTimer, follow, past_and_clear_due, plan_if_sooner, plan_now,
+    remaining_legs, replan_trigger,
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::recorded::RecordedMotion;
@@ -535,6 +536,21 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         if self.pending.is_none() && self.retry.due(time_s, latches) {
             self.pending = Some(PlanTrigger::Retry);
         }
+        if let Some(active) = self.active.as_mut() {
+            active.encounters_seen |= latches.iter().any(Option::is_some);
+        }
+        if self.pending.is_none()
+            && past_and_clear_due(
+                self.active.as_ref(),
+                latches,
+                &self.retry,
+                &self.own,
+                setup.goal_m,
+                setup.service_speed_mps,
+            )
+        {
+            self.pending = Some(PlanTrigger::PastAndClear);
+        }
         let Some(why) = self.pending.take() else {
             return Decision::SailedOn;
         };
@@ -553,6 +569,15 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         // with the encounters now in force: a new plan would only be a
         // different random branch, and changing course without need is what
         // rule 8(b) warns against.
+        let call = PlanCall {
+            why,
+            seed: call_seed(setup.seed, self.record.plans.len()),
+            clearance_m: setup.config.clearance_m,
+            speed_change_mps2: setup.speed_change_mps2,
+        };
+        if why == PlanTrigger::PastAndClear {
+            return self.ask_for_a_sooner_plan(&problem, &call);
+        }
         let still_valid = why != PlanTrigger::Retry
             && self.active.as_ref().is_some_and(|active| {
                 let legs = remaining_legs(&active.plan, time_s);
@@ -569,12 +594,6 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             });
             return Decision::KeptPlan(why);
         }
-        let call = PlanCall {
-            why,
-            seed: call_seed(setup.seed, self.record.plans.len()),
-            clearance_m: setup.config.clearance_m,
-            speed_change_mps2: setup.speed_change_mps2,
-        };
         plan_now(
             &mut setup.planners,
             &problem,
@@ -585,6 +604,31 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             &mut self.retry,
         );
         Decision::Planned(why)
+    }
+
+    /// Asked once per release of every encounter
+    /// ([`PlanTrigger::PastAndClear`]): the plan in force stays unless a
+    /// sooner one keeps every rule (decision 52). Nothing else about the
+    /// plan in force changes: its predictions stay those it was checked
+    /// against.
+    fn ask_for_a_sooner_plan(&mut self, problem: &PlanningProblem, call: &PlanCall) -> Decision {
+        if plan_if_sooner(
+            &mut self.setup.planners,
+            problem,
+            call,
+            &mut self.active,
+            &mut self.record.plans,
+        ) {
+            return Decision::Planned(call.why);
+        }
+        if let Some(active) = self.active.as_mut() {
+            active.encounters_seen = false;
+        }
+        self.record.plans_kept.push(PlanCheck {
+            time_s: problem.start_time_s,
+            trigger: call.why,
+        });
+        Decision::KeptPlan(call.why)
     }
 
     /// Sails one time step: ownship along the plan in force (straight on

@@ -27,6 +27,15 @@ pub const RETRY_AFTER_S: f64 = 20.0;
 /// (`vorrt_jfs::TURN_TIMING_UNCERTAINTY_S`).
 pub const RETURN_MOVED_S: f64 = vorrt_jfs::TURN_TIMING_UNCERTAINTY_S;
 
+/// A plan found when the vessels are past and clear
+/// ([`PlanTrigger::PastAndClear`]) replaces the plan in force only where it
+/// reaches the goal at least this much sooner, seconds; and the trigger is
+/// asked only where the plan in force arrives this much later than the
+/// straight line to the goal at its speed would (decision 52). One
+/// observation window (`colregs::rules::STEADY_COURSE_WINDOW_S`): a smaller
+/// gain is no reason to change a course an observer has seen steady.
+pub const PAST_AND_CLEAR_GAIN_S: f64 = 60.0;
+
 /// How far ahead the evasive course is judged, seconds.
 pub const EVASION_HORIZON_S: f64 = 600.0;
 
@@ -68,6 +77,12 @@ impl RetryTimer {
         self.situation.extend_from_slice(encounters);
     }
 
+    /// Whether no retry is pending (a plan that keeps every rule is in
+    /// force).
+    pub(super) fn is_idle(&self) -> bool {
+        !self.at_s.is_finite()
+    }
+
     /// Whether a retry is due at `time_s` with `encounters` in force.
     pub(super) fn due(&self, time_s: f64, encounters: &[Option<EncounterLatch>]) -> bool {
         self.at_s.is_finite() && (time_s >= self.at_s || self.situation != encounters)
@@ -83,6 +98,10 @@ pub(super) struct ActivePlan {
     pub(super) predicted: Vec<TargetState>,
     /// Per target, every encounter the plan expects to have with it.
     pub(super) anticipated: Vec<Vec<EncounterLatch>>,
+    /// Whether an encounter has been in force at some moment since the
+    /// plan was made (or since [`PlanTrigger::PastAndClear`] last asked):
+    /// the plan's alteration was made, or held, for it.
+    pub(super) encounters_seen: bool,
     /// Whether this is the evasive manoeuvre (judged against nothing; only
     /// the retry timer ends it).
     pub(super) evasive: bool,
@@ -105,6 +124,7 @@ impl ActivePlan {
     ) {
         self.predicted = predicted;
         self.predicted_at_s = time_s;
+        self.encounters_seen |= latches.iter().any(Option::is_some);
         for (expected, latch) in self.anticipated.iter_mut().zip(latches) {
             if let Some(latch) = latch
                 && !expected.contains(latch)
@@ -194,6 +214,7 @@ pub(super) fn plan_now<C: Constraint>(
         predicted_at_s: time_s,
         predicted: problem.targets.clone(),
         anticipated,
+        encounters_seen: problem.encounters.iter().any(Option::is_some),
         evasive: false,
         evasion: None,
     });
@@ -255,6 +276,96 @@ fn search<C: Constraint>(
     (None, attempts)
 }
 
+/// Whether the vessels the plan in force was made (or held) for are past and
+/// clear, while it still holds ownship off the straight line to the goal
+/// (`goal_m`, at `speed_mps`) by more than [`PAST_AND_CLEAR_GAIN_S`]: an
+/// encounter was in force since the plan was made, none is now (each was
+/// released by `colregs::has_passed`, the latch's one judgement), and the
+/// plan keeps every rule (no retry pending). Rule 8(d) asks for the action
+/// to be held until the other vessel is finally past and clear; a hold
+/// chosen for how the vessels were predicted (COLREGs-obeying vessels act,
+/// and the prediction of decision 18 may hold them on course longer) can
+/// outlast that by an hour.
+pub(super) fn past_and_clear_due(
+    active: Option<&ActivePlan>,
+    latches: &[Option<EncounterLatch>],
+    retry: &RetryTimer,
+    own: &VesselState,
+    goal_m: glam::DVec2,
+    speed_mps: f64,
+) -> bool {
+    let Some(active) = active.filter(|active| !active.evasive && active.encounters_seen) else {
+        return false;
+    };
+    if !retry.is_idle() || latches.iter().any(Option::is_some) || speed_mps <= 0.0 {
+        return false;
+    }
+    let arrival_s = active.plan.waypoints.last().map_or(0.0, |end| end.time_s);
+    let straight_s = own.position_m.distance(goal_m) / speed_mps;
+    arrival_s - straight_s > PAST_AND_CLEAR_GAIN_S
+}
+
+/// Asked once the vessels are past and clear
+/// ([`PlanTrigger::PastAndClear`]): searches at full compliance (the first
+/// phase only, as a retry) and puts the plan found in force only where it
+/// reaches the goal at least [`PAST_AND_CLEAR_GAIN_S`] sooner than the plan
+/// in force; returns whether it did. Otherwise the plan in force is kept
+/// (the caller records the check) and nothing is recorded here.
+pub(super) fn plan_if_sooner<C: Constraint>(
+    planners: &mut [Planner<C>],
+    problem: &PlanningProblem,
+    call: &PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+) -> bool {
+    let Some(in_force) = active.as_ref() else {
+        return false;
+    };
+    let arrival_s = |plan: &Plan| {
+        plan.waypoints
+            .last()
+            .map_or(f64::INFINITY, |end| end.time_s)
+    };
+    let in_force_s = arrival_s(&in_force.plan);
+    let Some(planner) = planners.first_mut() else {
+        return false;
+    };
+    if planner.config().compliance != Compliance::Full {
+        return false;
+    }
+    let Ok(plan) = planner.plan_with(problem, call.seed, SearchEffort::FirstPhase) else {
+        return false;
+    };
+    if arrival_s(&plan) > in_force_s - PAST_AND_CLEAR_GAIN_S {
+        return false;
+    }
+    plans.push(PlanEvent {
+        time_s: problem.start_time_s,
+        trigger: call.why,
+        seed: call.seed,
+        succeeded: true,
+        error: None,
+        statistics: plan.statistics,
+        waypoints: plan.waypoints.clone(),
+        speeds_mps: plan.waypoint_speeds_mps(),
+        evasive_course_deg: None,
+        evasive_speed_mps: None,
+        compliance: Compliance::Full,
+        samples_drawn: plan.statistics.samples,
+    });
+    let anticipated = plan.anticipated_encounters();
+    *active = Some(ActivePlan {
+        plan,
+        predicted_at_s: problem.start_time_s,
+        predicted: problem.targets.clone(),
+        anticipated,
+        encounters_seen: problem.encounters.iter().any(Option::is_some),
+        evasive: false,
+        evasion: None,
+    });
+    true
+}
+
 /// After every level failed: keeps the plan in force if the planner's
 /// validity check still accepts the rest of it, or else puts the evasive
 /// manoeuvre in force (the one in force held unless another is clearly
@@ -306,6 +417,7 @@ fn fall_back<C: Constraint>(
             predicted_at_s: time_s,
             predicted: problem.targets.clone(),
             anticipated: vec![Vec::new(); problem.targets.len()],
+            encounters_seen: false,
             evasive: true,
             evasion: Some(evasion),
         });

@@ -30,6 +30,13 @@ pub enum PlanTrigger {
     },
     /// The previous attempt failed; trying again.
     Retry,
+    /// Every encounter in force since the plan was made has been released
+    /// (the vessels are past and clear, `colregs::has_passed`) while the
+    /// plan still holds an alteration off the route: ownship asks whether
+    /// it may return sooner (rule 8(d): the action is held until the other
+    /// vessel is past and clear, not longer). A plan found is put in force
+    /// only where it reaches the goal sooner (decision 52).
+    PastAndClear,
 }
 
 /// One call of the planner during a run.
