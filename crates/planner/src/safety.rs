@@ -134,6 +134,10 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
     in_reach: Option<&'a [bool]>,
+    /// Whether a leg's check carries from piece to piece which targets no
+    /// risk can reach while ownship and they hold their velocities
+    /// (decision 54); off only to compare.
+    leg_memo: bool,
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -160,6 +164,7 @@ impl<'a> SafetyChecker<'a> {
             steady_course_rad: ownship.course_rad,
             constraint: &NoConstraint,
             in_reach: None,
+            leg_memo: true,
         }
     }
 }
@@ -177,6 +182,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             steady_course_rad: self.steady_course_rad,
             constraint,
             in_reach: self.in_reach,
+            leg_memo: self.leg_memo,
         }
     }
 
@@ -260,6 +266,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             steady_course_rad: self.steady_course_rad,
             constraint: self.constraint,
             in_reach: Some(in_reach),
+            leg_memo: self.leg_memo,
         }
     }
 
@@ -269,6 +276,22 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     pub fn may_reach(&self, index: usize) -> bool {
         self.in_reach
             .is_none_or(|in_reach| in_reach.get(index).copied().unwrap_or(true))
+    }
+
+    /// The same checker without the memo of decision 54: each piece of a
+    /// leg judges every target's risk afresh. The same verdicts and the same
+    /// encounters, only slower: for comparing (`tests/leg_memo.rs`).
+    #[must_use]
+    pub fn without_leg_memo(mut self) -> Self {
+        self.leg_memo = false;
+        self
+    }
+
+    /// Whether a leg's check keeps the memo of decision 54
+    /// ([`without_leg_memo`](Self::without_leg_memo)).
+    #[must_use]
+    pub fn leg_memo(&self) -> bool {
+        self.leg_memo
     }
 
     /// The planner's settings.
