@@ -28,8 +28,8 @@ use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::rules::{
-    PortTurnGate, acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel,
-    may_act,
+    PortTurnGate, acting_for_any, course_change_rad, is_port_turn,
+    is_port_turn_toward_vessel_moving, may_act,
 };
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, ManeuverViolation, Role, VesselState, check_action,
@@ -134,10 +134,8 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
     in_reach: Option<&'a [bool]>,
-    /// Whether a leg's check carries from piece to piece which targets no
-    /// risk can reach while ownship and they hold their velocities
-    /// (decision 54); off only to compare.
-    leg_memo: bool,
+    /// Whether a leg's check keeps its memo (decision 54; `validity`).
+    pub(crate) leg_memo: bool,
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -276,22 +274,6 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     pub fn may_reach(&self, index: usize) -> bool {
         self.in_reach
             .is_none_or(|in_reach| in_reach.get(index).copied().unwrap_or(true))
-    }
-
-    /// The same checker without the memo of decision 54: each piece of a
-    /// leg judges every target's risk afresh. The same verdicts and the same
-    /// encounters, only slower: for comparing (`tests/leg_memo.rs`).
-    #[must_use]
-    pub fn without_leg_memo(mut self) -> Self {
-        self.leg_memo = false;
-        self
-    }
-
-    /// Whether a leg's check keeps the memo of decision 54
-    /// ([`without_leg_memo`](Self::without_leg_memo)).
-    #[must_use]
-    pub fn leg_memo(&self) -> bool {
-        self.leg_memo
     }
 
     /// The planner's settings.
@@ -455,6 +437,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             speed_mps: candidate.velocity_mps.length(),
             ..self.ownship
         };
+        // Ownship's velocities on the course turned to and the course before,
+        // worked out once for every target (decision 54).
+        let mut own_mps = None;
         let gate = PortTurnGate::new(course_before_rad, candidate.course_rad);
         for (index, track) in self.tracks.iter().enumerate() {
             if !self.may_reach(index) {
@@ -472,7 +457,20 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 continue;
             }
             let target = track.state_at(candidate.start_elapsed_s);
-            if is_port_turn_toward_vessel(course_before_rad, &own, &target, rules) {
+            let (own_mps, before_mps) = *own_mps.get_or_insert_with(|| {
+                let before = VesselState {
+                    course_rad: course_before_rad,
+                    ..own
+                };
+                (own.velocity_mps(), before.velocity_mps())
+            });
+            if is_port_turn_toward_vessel_moving(
+                course_before_rad,
+                (&own, own_mps, before_mps),
+                &target,
+                target.velocity_mps(),
+                rules,
+            ) {
                 return Err(RejectionCause::Colregs(
                     ManeuverViolation::PortTurnTowardVessel,
                 ));

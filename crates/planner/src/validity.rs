@@ -271,6 +271,24 @@ impl EncounterState {
     }
 }
 
+impl<C: Constraint> SafetyChecker<'_, C> {
+    /// The same checker without the memo of decision 54: each piece of a
+    /// leg judges every target's risk afresh. The same verdicts and the same
+    /// encounters, only slower: for comparing (`tests/leg_memo.rs`).
+    #[must_use]
+    pub fn without_leg_memo(mut self) -> Self {
+        self.leg_memo = false;
+        self
+    }
+
+    /// Whether a leg's check keeps the memo of decision 54
+    /// ([`without_leg_memo`](Self::without_leg_memo)).
+    #[must_use]
+    pub fn leg_memo(&self) -> bool {
+        self.leg_memo
+    }
+}
+
 /// What a leg's check carries from one piece to the next, per target
 /// ([`EncounterState::advance_reusing`]).
 #[derive(Debug, Default)]
@@ -627,4 +645,51 @@ pub fn check_legs_with<C: Constraint>(
         elapsed_s += leg.duration_s();
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::PlannerConfig;
+    use vorrt_jfs::TargetState;
+
+    /// A vessel 5 km to starboard on the reciprocal course passes clear: on
+    /// the straight run it is remembered as one no risk can reach, and the
+    /// memo is dropped on a piece not sailed at the velocity seen.
+    #[test]
+    fn a_target_passing_clear_is_remembered_on_the_straight_run() {
+        let config = PlannerConfig::default();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+        let tracks = [TargetState::constant_velocity(VesselState::new(
+            DVec2::new(5_000.0, 6_000.0),
+            std::f64::consts::PI,
+            6.0,
+            100.0,
+        ))
+        .track()];
+        let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
+        let mut state = EncounterState {
+            latches: vec![None],
+            alterations: vec![0.0],
+        };
+        let mut memo = LegMemo::default();
+        let north = DVec2::new(0.0, 6.0);
+        for (elapsed_s, sailed_mps) in [(10.0, Some(north)), (20.0, Some(north))] {
+            let own_then = VesselState {
+                position_m: north * elapsed_s,
+                ..own
+            };
+            state.advance_reusing(&own_then, 0.0, &checker, (elapsed_s, sailed_mps), &mut memo);
+        }
+        assert_eq!(memo.clear, [Some(0)]);
+        assert_eq!(memo.seen_mps, Some(north));
+        // A transient piece (a turn's chord): nothing is kept.
+        let own_then = VesselState {
+            position_m: north * 30.0,
+            ..own
+        };
+        state.advance_reusing(&own_then, 0.0, &checker, (30.0, None), &mut memo);
+        assert_eq!(memo.clear, [None]);
+        assert_eq!(state.latches, [None]);
+    }
 }
