@@ -125,7 +125,7 @@ impl EncounterState {
     /// with the targets' states then, in target order (a closed loop's true
     /// present states): latches are updated from the new geometry (a new
     /// one judged on `steady_course_rad`, the course held before any recent
-    /// turn: [`update_latch_steady`]), and the alteration made grows to
+    /// turn: [`update_latch_steady`](vorrt_colregs::update_latch_steady)), and the alteration made grows to
     /// `own_then`'s course ([`alteration_made`]). The same operation as
     /// [`advance`](Self::advance) along a planner's branch, so a closed loop
     /// carries the encounters as the planner does.
