@@ -7,7 +7,7 @@
 pub use crate::encounter::EncounterLatch;
 use crate::encounter::{Encounter, classify};
 use crate::parameters::RuleParameters;
-use crate::risk::assess_risk;
+use crate::risk::assess_risk_moving;
 use crate::rules::within_mtd;
 use crate::vessel::VesselState;
 
@@ -130,11 +130,13 @@ pub fn update_latch_steady(
     latch_step(
         current,
         own,
-        || (own.velocity_mps(), target.velocity_mps()),
+        (
+            || (own.velocity_mps(), target.velocity_mps()),
+            |seen: &VesselState| (seen.velocity_mps(), target.velocity_mps()),
+        ),
         steady_course_rad,
         target,
-        time_s,
-        parameters,
+        (time_s, parameters),
     )
 }
 
@@ -157,25 +159,62 @@ pub fn update_latch_steady_moving(
     latch_step(
         current,
         own,
-        || velocities_mps,
+        (
+            || velocities_mps,
+            |seen: &VesselState| (seen.velocity_mps(), velocities_mps.1),
+        ),
         steady_course_rad,
         target,
-        time_s,
-        parameters,
+        (time_s, parameters),
     )
 }
 
-/// The one step behind [`update_latch_steady`] and
-/// [`update_latch_steady_moving`], with ownship's and the target's
-/// velocities given by `velocities`, asked for only where passing is judged.
-fn latch_step(
+/// As [`update_latch_steady_moving`], with ownship's velocity on its steady
+/// course also worked out (`seen_mps`: [`VesselState::velocity_mps`] of
+/// `own` on `steady_course_rad`, the velocity a new encounter's risk is
+/// judged by): a caller stepping many targets against one state of ownship
+/// works every velocity of ownship out once (decision 54). The same latch as
+/// [`update_latch_steady`].
+#[inline]
+#[must_use]
+pub fn update_latch_seen_moving(
     current: Option<EncounterLatch>,
     own: &VesselState,
-    velocities: impl Fn() -> (glam::DVec2, glam::DVec2),
-    steady_course_rad: f64,
+    velocities_mps: (glam::DVec2, glam::DVec2),
+    (steady_course_rad, seen_mps): (f64, glam::DVec2),
     target: &VesselState,
     time_s: f64,
     parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
+    latch_step(
+        current,
+        own,
+        (
+            || velocities_mps,
+            |_: &VesselState| (seen_mps, velocities_mps.1),
+        ),
+        steady_course_rad,
+        target,
+        (time_s, parameters),
+    )
+}
+
+/// The one step behind [`update_latch_steady`],
+/// [`update_latch_steady_moving`] and [`update_latch_seen_moving`], with
+/// ownship's and the target's velocities given by `velocities` (asked for
+/// only where passing is judged) and, for ownship as seen on its steady
+/// course (`seen`) and the target, by `risk_velocities(seen)` (asked for
+/// only within MTD); `clock` is the time and the rules.
+fn latch_step(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    (velocities, risk_velocities): (
+        impl Fn() -> (glam::DVec2, glam::DVec2),
+        impl Fn(&VesselState) -> (glam::DVec2, glam::DVec2),
+    ),
+    steady_course_rad: f64,
+    target: &VesselState,
+    (time_s, parameters): (f64, &RuleParameters),
 ) -> Option<EncounterLatch> {
     let passed = |encounter: Encounter| {
         has_passed_moving(own.position_m, velocities(), target, encounter, parameters)
@@ -192,7 +231,8 @@ fn latch_step(
                 course_rad: steady_course_rad,
                 ..*own
             };
-            if !assess_risk(&seen, target, parameters).at_risk {
+            let (seen_mps, target_mps) = risk_velocities(&seen);
+            if !assess_risk_moving(&seen, seen_mps, target, target_mps, parameters).at_risk {
                 return None;
             }
             match classify(&seen, target, parameters) {
@@ -214,6 +254,7 @@ fn latch_step(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::risk::assess_risk;
     use glam::DVec2;
     use std::f64::consts::PI;
 

@@ -466,6 +466,33 @@ pub fn is_port_turn_toward_vessel(
     target: &crate::VesselState,
     parameters: &RuleParameters,
 ) -> bool {
+    let before_mps = crate::VesselState {
+        course_rad: course_before_rad,
+        ..*own
+    }
+    .velocity_mps();
+    is_port_turn_toward_vessel_moving(
+        course_before_rad,
+        (own, own.velocity_mps(), before_mps),
+        target,
+        target.velocity_mps(),
+        parameters,
+    )
+}
+
+/// As [`is_port_turn_toward_vessel`], with the velocities already worked
+/// out: `own` with its [`VesselState::velocity_mps`](crate::VesselState::velocity_mps)
+/// and its velocity on `course_before_rad`, and `target_mps`, `target`'s: a
+/// caller judging many targets against one course works ownship's out once
+/// (decision 54). The same judgement as [`is_port_turn_toward_vessel`].
+#[must_use]
+pub fn is_port_turn_toward_vessel_moving(
+    course_before_rad: f64,
+    (own, own_mps, before_mps): (&crate::VesselState, DVec2, DVec2),
+    target: &crate::VesselState,
+    target_mps: DVec2,
+    parameters: &RuleParameters,
+) -> bool {
     let turn = course_change_rad(course_before_rad, own.course_rad);
     if !is_port_turn(turn, parameters) || !within_mtd(own.range_to(target), parameters) {
         return false;
@@ -474,19 +501,16 @@ pub fn is_port_turn_toward_vessel(
     let forward_of_beam = !(0.5 * PI..=1.5 * PI).contains(&bearing_now);
     forward_of_beam
         && is_on_port_side(own.position_m, course_before_rad, target.position_m)
-        && crate::assess_risk(own, target, parameters).at_risk
-        && crate::crosses_ahead(
-            own.position_m,
-            own.velocity_mps(),
-            target.position_m,
-            target.velocity_mps(),
-        )
-        && !crate::assess_risk(
+        && crate::risk::assess_risk_moving(own, own_mps, target, target_mps, parameters).at_risk
+        && crate::crosses_ahead(own.position_m, own_mps, target.position_m, target_mps)
+        && !crate::risk::assess_risk_moving(
             &crate::VesselState {
                 course_rad: course_before_rad,
                 ..*own
             },
+            before_mps,
             target,
+            target_mps,
             parameters,
         )
         .at_risk

@@ -269,6 +269,28 @@ impl LinearTrack {
         }
     }
 
+    /// Which stretch of the track `elapsed_s` lies on: 0 the first leg, 1
+    /// the second, 2 at rest once stopped; `None` before time zero (where
+    /// the position is held but the state moves). Within one stretch
+    /// [`velocity_at`](Self::velocity_at) and the course and speed of
+    /// [`state_at`](Self::state_at) are each one value, and
+    /// [`position_at`](Self::position_at) moves at `velocity_at` (to
+    /// rounding): what a caller needs to carry a judgement from one time to
+    /// a later one on the same stretch (decision 54).
+    #[inline]
+    #[must_use]
+    pub fn stretch_at(&self, elapsed_s: f64) -> Option<u8> {
+        if elapsed_s.is_nan() || elapsed_s < 0.0 {
+            None
+        } else if elapsed_s < self.turns_at_s.min(self.moving_for_s) {
+            Some(0)
+        } else if elapsed_s < self.moving_for_s {
+            Some(1)
+        } else {
+            Some(2)
+        }
+    }
+
     /// The full vessel state `elapsed_s` after time zero: on the second leg
     /// it has the second leg's course; once stopped, speed 0 and the last
     /// course kept.

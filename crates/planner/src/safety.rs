@@ -28,8 +28,8 @@ use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
 use glam::DVec2;
 use vorrt_colregs::rules::{
-    PortTurnGate, acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel,
-    may_act,
+    PortTurnGate, acting_for_any, course_change_rad, is_port_turn,
+    is_port_turn_toward_vessel_moving, may_act,
 };
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, ManeuverViolation, Role, VesselState, check_action,
@@ -134,6 +134,8 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
     in_reach: Option<&'a [bool]>,
+    /// Whether a leg's check keeps its memo (decision 54; `validity`).
+    pub(crate) leg_memo: bool,
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -160,6 +162,7 @@ impl<'a> SafetyChecker<'a> {
             steady_course_rad: ownship.course_rad,
             constraint: &NoConstraint,
             in_reach: None,
+            leg_memo: true,
         }
     }
 }
@@ -177,6 +180,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             steady_course_rad: self.steady_course_rad,
             constraint,
             in_reach: self.in_reach,
+            leg_memo: self.leg_memo,
         }
     }
 
@@ -260,6 +264,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             steady_course_rad: self.steady_course_rad,
             constraint: self.constraint,
             in_reach: Some(in_reach),
+            leg_memo: self.leg_memo,
         }
     }
 
@@ -404,7 +409,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// to port from `course_before_rad` (the course held before the turn)
     /// toward a vessel on the port side forward of the beam that makes it a
     /// risk of collision to be crossed ahead of, where on the course before
-    /// it was none ([`is_port_turn_toward_vessel`]), creates a new danger,
+    /// it was none ([`is_port_turn_toward_vessel`](vorrt_colregs::rules::is_port_turn_toward_vessel)), creates a new danger,
     /// such as a return toward the goal onto a vessel crossing from port
     /// (issue 24; decision 28). `candidate` is the first piece on the
     /// settled course; the manoeuvre search then holds the alteration
@@ -432,6 +437,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             speed_mps: candidate.velocity_mps.length(),
             ..self.ownship
         };
+        // Ownship's velocities on the course turned to and the course before,
+        // worked out once for every target (decision 54).
+        let mut own_mps = None;
         let gate = PortTurnGate::new(course_before_rad, candidate.course_rad);
         for (index, track) in self.tracks.iter().enumerate() {
             if !self.may_reach(index) {
@@ -449,7 +457,20 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 continue;
             }
             let target = track.state_at(candidate.start_elapsed_s);
-            if is_port_turn_toward_vessel(course_before_rad, &own, &target, rules) {
+            let (own_mps, before_mps) = *own_mps.get_or_insert_with(|| {
+                let before = VesselState {
+                    course_rad: course_before_rad,
+                    ..own
+                };
+                (own.velocity_mps(), before.velocity_mps())
+            });
+            if is_port_turn_toward_vessel_moving(
+                course_before_rad,
+                (&own, own_mps, before_mps),
+                &target,
+                target.velocity_mps(),
+                rules,
+            ) {
                 return Err(RejectionCause::Colregs(
                     ManeuverViolation::PortTurnTowardVessel,
                 ));

@@ -25,12 +25,11 @@ use crate::constraint::{Constraint, NoConstraint, Segment};
 use crate::plan::RejectionCause;
 use crate::safety::{Move, SafetyChecker};
 use glam::DVec2;
+use vorrt_colregs::risk::no_risk_while_steady;
 use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
-use vorrt_colregs::{
-    EncounterLatch, RuleParameters, VesselState, update_latch_steady, update_latch_steady_moving,
-};
+use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
 use vorrt_jfs::{Leg, LinearTrack};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -83,17 +82,20 @@ impl EncounterState {
     }
 
     /// As [`advance`](Self::advance) along `checker`'s tracks, with its
-    /// clock and rules, keeping in `known` (one slot a target, made once
-    /// some encounter is in force) each target's velocity for the course and
-    /// speed it had when last worked out, to be reused while they stay the
-    /// same (along a leg): the same velocities, so the same encounters.
+    /// clock and rules, keeping in `memo` what carries from one piece of a
+    /// leg to the next: each target's velocity for the course and speed it
+    /// had when last worked out, reused while they stay the same (the same
+    /// velocities, so the same encounters), and the targets no risk can
+    /// reach while ownship and they hold their velocities (decision 54).
+    /// `sailed_mps`: ownship's velocity over the piece just sailed, if it
+    /// was on its settled course and speed (not a transient piece).
     pub(crate) fn advance_reusing<C: Constraint>(
         &mut self,
         own_then: &VesselState,
         steady_course_rad: f64,
         checker: &SafetyChecker<'_, C>,
-        elapsed_s: f64,
-        known: &mut Vec<KnownVelocity>,
+        (elapsed_s, sailed_mps): (f64, Option<DVec2>),
+        memo: &mut LegMemo,
     ) {
         let tracks = checker.tracks();
         let clock = (checker.start_time_s() + elapsed_s, &checker.config().rules);
@@ -109,7 +111,12 @@ impl EncounterState {
                 |index: usize| tracks[index].state_at(elapsed_s),
             ),
             clock,
-            Some(known),
+            Some(Along {
+                memo,
+                tracks,
+                elapsed_s,
+                sailed_mps: sailed_mps.filter(|_| checker.leg_memo()),
+            }),
             |index| !checker.may_reach(index),
         );
     }
@@ -118,7 +125,7 @@ impl EncounterState {
     /// with the targets' states then, in target order (a closed loop's true
     /// present states): latches are updated from the new geometry (a new
     /// one judged on `steady_course_rad`, the course held before any recent
-    /// turn: [`update_latch_steady`]), and the alteration made grows to
+    /// turn: [`update_latch_steady`](vorrt_colregs::update_latch_steady)), and the alteration made grows to
     /// `own_then`'s course ([`alteration_made`]). The same operation as
     /// [`advance`](Self::advance) along a planner's branch, so a closed loop
     /// carries the encounters as the planner does.
@@ -149,8 +156,8 @@ impl EncounterState {
     /// each one's position then (by index), and its state then (by index,
     /// asked only for a target within MTD or with an encounter): the ranges
     /// need only positions, which a track gives for less than its state;
-    /// `clock` is `time_s` and the rules; `known` as
-    /// for [`advance_reusing`](Self::advance_reusing) (`None`: none kept);
+    /// `clock` is `time_s` and the rules; `along` the memo of
+    /// [`advance_reusing`](Self::advance_reusing) (`None`: none kept);
     /// `out_of_reach(index)`: that target has no encounter, carries no
     /// alteration and cannot latch one (its state is not used).
     fn advance_with(
@@ -163,7 +170,7 @@ impl EncounterState {
             impl Fn(usize) -> VesselState,
         ),
         clock: (f64, &RuleParameters),
-        mut known: Option<&mut Vec<KnownVelocity>>,
+        mut along: Option<Along<'_>>,
         out_of_reach: impl Fn(usize) -> bool,
     ) {
         let (time_s, rules) = clock;
@@ -183,16 +190,23 @@ impl EncounterState {
                 }),
             rules,
         );
-        // Worked out once for all the latched targets, if any (the velocity
-        // `update_latch_steady` works out for each to judge passing).
-        let own_velocity_mps = self
-            .latches
-            .iter()
-            .any(Option::is_some)
-            .then(|| own_then.velocity_mps());
-        if let Some(known) = known.as_deref_mut().filter(|_| own_velocity_mps.is_some()) {
-            known.resize(self.latches.len(), None);
-        }
+        // Ownship's velocity, and as a new encounter sees it (its steady
+        // course at its speed), worked out once for every target (decision
+        // 54): the velocities `update_latch_steady` works out for each.
+        let own_velocity_mps = own_then.velocity_mps();
+        let seen_mps = if steady_course_rad.to_bits() == own_then.course_rad.to_bits() {
+            own_velocity_mps
+        } else {
+            VesselState {
+                course_rad: steady_course_rad,
+                ..*own_then
+            }
+            .velocity_mps()
+        };
+        // Whether the memo may be kept at this piece (decision 54).
+        let steady = along
+            .as_mut()
+            .is_some_and(|along| along.settle(seen_mps, self.latches.len()));
         for (index, (latch, altered)) in self
             .latches
             .iter_mut()
@@ -204,6 +218,14 @@ impl EncounterState {
                 continue;
             }
             let before = *latch;
+            if before.is_none() && steady && along.as_ref().is_some_and(|along| along.clear(index))
+            {
+                // No encounter, and no risk can arise while ownship and the
+                // target hold the velocities they had when that was found
+                // (`no_risk_while_steady`): none begins.
+                *altered = alteration_made(None, None, *altered, own_then.course_rad, false);
+                continue;
+            }
             if before.is_none()
                 && !vorrt_colregs::rules::within_mtd(
                     own_then.position_m.distance(position_then(index)),
@@ -216,29 +238,29 @@ impl EncounterState {
                 continue;
             }
             let target = state_then(index);
-            *latch = match (before, own_velocity_mps) {
-                (Some(_), Some(own_velocity_mps)) => update_latch_steady_moving(
-                    before,
-                    own_then,
-                    (
-                        own_velocity_mps,
-                        known
-                            .as_deref_mut()
-                            .and_then(|known| known.get_mut(index))
-                            .map_or_else(
-                                || target.velocity_mps(),
-                                |slot| velocity_of(slot, &target),
-                            ),
-                    ),
-                    steady_course_rad,
+            let target_mps = along.as_mut().map_or_else(
+                || target.velocity_mps(),
+                |along| along.velocity(index, &target),
+            );
+            *latch = update_latch_seen_moving(
+                before,
+                own_then,
+                (own_velocity_mps, target_mps),
+                (steady_course_rad, seen_mps),
+                &target,
+                time_s,
+                rules,
+            );
+            if let (None, None, true, Some(along)) = (before, *latch, steady, along.as_mut()) {
+                along.remember(
+                    index,
+                    (own_then.position_m, seen_mps),
                     &target,
-                    time_s,
-                    rules,
-                ),
-                _ => {
-                    update_latch_steady(before, own_then, steady_course_rad, &target, time_s, rules)
-                }
-            };
+                    target_mps,
+                    // The pair's distance (decision 50), as the latch judges it.
+                    rules.risk_distance_m(own_then.length_m, target.length_m),
+                );
+            }
             *altered = alteration_made(
                 before,
                 *latch,
@@ -246,6 +268,122 @@ impl EncounterState {
                 own_then.course_rad,
                 acting_for_others,
             );
+        }
+    }
+}
+
+impl<C: Constraint> SafetyChecker<'_, C> {
+    /// The same checker without the memo of decision 54: each piece of a
+    /// leg judges every target's risk afresh. The same verdicts and the same
+    /// encounters, only slower: for comparing (`tests/leg_memo.rs`).
+    #[must_use]
+    pub fn without_leg_memo(mut self) -> Self {
+        self.leg_memo = false;
+        self
+    }
+
+    /// Whether a leg's check keeps the memo of decision 54
+    /// ([`without_leg_memo`](Self::without_leg_memo)).
+    #[must_use]
+    pub fn leg_memo(&self) -> bool {
+        self.leg_memo
+    }
+}
+
+/// What a leg's check carries from one piece to the next, per target
+/// ([`EncounterState::advance_reusing`]).
+#[derive(Debug, Default)]
+pub(crate) struct LegMemo {
+    /// Each target's velocity, reused while its course and speed stay the
+    /// same ([`velocity_of`]).
+    velocities: Vec<KnownVelocity>,
+    /// Ownship's velocity as a new encounter sees it (its steady course at
+    /// its speed) for which `clear` holds; `None` while ownship does not
+    /// sail at it.
+    seen_mps: Option<DVec2>,
+    /// Per target, the stretch of its track ([`LinearTrack::stretch_at`])
+    /// on which no risk can arise while ownship keeps `seen_mps`
+    /// ([`no_risk_while_steady`]), found on a piece with no encounter.
+    clear: Vec<Option<u8>>,
+}
+
+/// How near, m/s, the velocity sailed over a piece must be to the velocity
+/// seen ([`LegMemo::seen_mps`]) for the memo to be kept: the same course
+/// and speed, to rounding. Over an hour the two part by under 4 µm, far
+/// within [`STEADY_ROUNDING_M`](vorrt_colregs::risk::STEADY_ROUNDING_M).
+const SAILED_TOLERANCE_MPS: f64 = 1e-9;
+
+/// The memo of one leg's check at one piece: the targets' tracks, the
+/// elapsed time of the piece's end, and ownship's velocity over the piece
+/// when it sailed its settled course and speed.
+pub(crate) struct Along<'m> {
+    memo: &'m mut LegMemo,
+    tracks: &'m [LinearTrack],
+    elapsed_s: f64,
+    sailed_mps: Option<DVec2>,
+}
+
+impl Along<'_> {
+    /// Whether the memo holds at this piece for ownship's velocity as seen
+    /// (`seen_mps`): the piece was sailed at that velocity, and so was every
+    /// piece since the memo was last cleared (else it is cleared now).
+    /// `count`: the number of targets.
+    fn settle(&mut self, seen_mps: DVec2, count: usize) -> bool {
+        let memo = &mut *self.memo;
+        memo.velocities.resize(count, None);
+        let seen_mps = self
+            .sailed_mps
+            .filter(|sailed| sailed.distance(seen_mps) <= SAILED_TOLERANCE_MPS)
+            .map(|_| seen_mps);
+        if memo.seen_mps != seen_mps || memo.clear.len() != count {
+            memo.clear.clear();
+            memo.clear.resize(count, None);
+            memo.seen_mps = seen_mps;
+        }
+        seen_mps.is_some()
+    }
+
+    /// Whether no risk can arise with target `index` at this piece: found
+    /// so on an earlier piece, on the stretch of its track it is still on.
+    fn clear(&self, index: usize) -> bool {
+        self.memo
+            .clear
+            .get(index)
+            .copied()
+            .flatten()
+            .is_some_and(|stretch| self.tracks[index].stretch_at(self.elapsed_s) == Some(stretch))
+    }
+
+    /// `target`'s velocity ([`velocity_of`]).
+    fn velocity(&mut self, index: usize, target: &VesselState) -> DVec2 {
+        match self.memo.velocities.get_mut(index) {
+            Some(slot) => velocity_of(slot, target),
+            None => target.velocity_mps(),
+        }
+    }
+
+    /// Keeps target `index` as one no risk can reach, if so, after a piece
+    /// with no encounter with it: ownship at `own` (position and the
+    /// velocity seen), the target's state `target` and velocity
+    /// `target_mps`. Only where the target's
+    /// state moves as its track does on this stretch.
+    fn remember(
+        &mut self,
+        index: usize,
+        own: (DVec2, DVec2),
+        target: &VesselState,
+        target_mps: DVec2,
+        risk_distance_m: f64,
+    ) {
+        let track = &self.tracks[index];
+        let Some(stretch) = track.stretch_at(self.elapsed_s) else {
+            return;
+        };
+        if target_mps.distance(track.velocity_at(self.elapsed_s)) <= SAILED_TOLERANCE_MPS
+            && no_risk_while_steady(own.0, own.1, target.position_m, target_mps, risk_distance_m)
+            && let Some(slot) = self.memo.clear.get_mut(index)
+        {
+            *slot = Some(stretch);
         }
     }
 }
@@ -375,8 +513,9 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         let settled_until_s =
             start_elapsed_s + leg.turn_duration_s() + 2.0 * STEADY_COURSE_WINDOW_S;
         // Each target's velocity, reused along the leg while its course and
-        // speed stay the same.
-        let mut kept: Vec<KnownVelocity> = Vec::new();
+        // speed stay the same, and the targets no risk can reach while the
+        // velocities hold (decision 54).
+        let mut memo = LegMemo::default();
         for piece in leg.pieces(self.config().step_m) {
             let candidate = Move {
                 start_m: piece.start_m,
@@ -440,8 +579,11 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 &own_then,
                 steady_course_rad,
                 &checker,
-                end_elapsed_s,
-                &mut kept,
+                (
+                    end_elapsed_s,
+                    (!piece.transient()).then_some(piece.velocity_mps),
+                ),
+                &mut memo,
             );
         }
         Ok(())
@@ -504,4 +646,51 @@ pub fn check_legs_with<C: Constraint>(
         elapsed_s += leg.duration_s();
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::PlannerConfig;
+    use vorrt_jfs::TargetState;
+
+    /// A vessel 5 km to starboard on the reciprocal course passes clear: on
+    /// the straight run it is remembered as one no risk can reach, and the
+    /// memo is dropped on a piece not sailed at the velocity seen.
+    #[test]
+    fn a_target_passing_clear_is_remembered_on_the_straight_run() {
+        let config = PlannerConfig::default();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+        let tracks = [TargetState::constant_velocity(VesselState::new(
+            DVec2::new(5_000.0, 6_000.0),
+            std::f64::consts::PI,
+            6.0,
+            100.0,
+        ))
+        .track()];
+        let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
+        let mut state = EncounterState {
+            latches: vec![None],
+            alterations: vec![0.0],
+        };
+        let mut memo = LegMemo::default();
+        let north = DVec2::new(0.0, 6.0);
+        for (elapsed_s, sailed_mps) in [(10.0, Some(north)), (20.0, Some(north))] {
+            let own_then = VesselState {
+                position_m: north * elapsed_s,
+                ..own
+            };
+            state.advance_reusing(&own_then, 0.0, &checker, (elapsed_s, sailed_mps), &mut memo);
+        }
+        assert_eq!(memo.clear, [Some(0)]);
+        assert_eq!(memo.seen_mps, Some(north));
+        // A transient piece (a turn's chord): nothing is kept.
+        let own_then = VesselState {
+            position_m: north * 30.0,
+            ..own
+        };
+        state.advance_reusing(&own_then, 0.0, &checker, (30.0, None), &mut memo);
+        assert_eq!(memo.clear, [None]);
+        assert_eq!(state.latches, [None]);
+    }
 }
