@@ -32,9 +32,8 @@ pub(crate) struct FailedSearch {
     pub(crate) seed: u64,
     pub(crate) effort: SearchEffort,
     pub(crate) refused: RejectionCounts,
-    /// Every verdict of its validity check, in the order asked, by stream
-    /// ([`Verdicts`]).
-    pub(crate) verdicts: SearchVerdicts,
+    /// Every verdict of its validity check, in the order asked ([`Verdicts`]).
+    pub(crate) verdicts: Vec<Verdict>,
 }
 
 impl FailedSearch {
@@ -101,119 +100,73 @@ pub(crate) type Verdict = Result<(), RejectionCause>;
 /// A search is a pure function of the problem, the settings, the seed and
 /// the effort, and of its verdicts: which move it asks next follows from
 /// the verdicts before (module documentation). So a weaker level asks the
-/// stricter search's moves in the same order for as long as the verdicts
-/// agree, and where the stricter search refused a move for a duty the
-/// weaker level checks too ([`Compliance::checks`](crate::Compliance::checks)),
-/// the weaker level refuses it for the same duty (the checks before it
-/// pass, being a subset of those that passed): that verdict is taken from
-/// the earlier search instead of judged again. Every other move is judged;
-/// from the first verdict that differs, the two searches part and nothing
-/// more of that stream is replayed. A move the earlier search accepted is
-/// judged again, for the encounters in force at its end.
-///
-/// The tree's moves are a stream of their own ([`Stream::Tree`]): the
-/// manoeuvre searches (from the root, and a branch's simplification) draw
-/// no samples, and the earlier search, having failed, found no plan in any
-/// of them, so the tree is grown the same whatever they asked, until this
-/// search finds a plan. In the tree only acceptance decides what is asked
-/// next (a refusal's cause is only counted), so the tree's stream parts at
-/// a move one search accepts and the other refuses; the manoeuvre searches
-/// branch on the cause (a return refused for a port turn tries a course
-/// astern), so theirs parts at any other verdict. The verdicts, and so the
-/// plans, are the same as without the replay; only the work differs.
+/// stricter search's moves in the same order for as long as every verdict
+/// agrees, and where the stricter search refused a move for a duty the
+/// weaker level checks too ([`Compliance::checks`](crate::Compliance::checks)), the weaker level refuses it
+/// for the same duty (the checks before it pass, being a subset of those
+/// that passed): that verdict is taken from the earlier search instead of
+/// judged again. Every other move is judged; from the first verdict that
+/// differs from the earlier search's, the two searches part and nothing
+/// more is replayed. A move the earlier search accepted is judged again,
+/// for the encounters in force at its end. The verdicts, and so the plans,
+/// are the same as without the replay; only the work differs.
 #[derive(Debug, Default)]
 pub(crate) struct Verdicts {
-    /// This search's level.
-    level: Compliance,
-    /// The manoeuvre searches' verdicts, then the tree's.
-    streams: [StreamLog; 2],
-    /// How many verdicts were replayed rather than judged.
-    pub(crate) replayed: u64,
-}
-
-/// Which verdicts of a search a move's belongs with ([`Verdicts`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Stream {
-    /// The manoeuvre searches: from the root, and a branch's simplification.
-    Manoeuvres = 0,
-    /// The tree's growth and its final segments onto the goal.
-    Tree = 1,
-}
-
-/// One stream of [`Verdicts`].
-#[derive(Debug, Default, Clone, PartialEq)]
-struct StreamLog {
     /// The earlier search's verdicts (empty: none to replay).
     earlier: Vec<Verdict>,
+    /// This search's level.
+    level: Compliance,
     /// How many verdicts this search has given.
     asked: usize,
     /// Whether this search has parted from the earlier one.
     parted: bool,
     /// This search's verdicts, in order.
-    log: Vec<Verdict>,
+    pub(crate) log: Vec<Verdict>,
+    /// How many verdicts were replayed rather than judged.
+    pub(crate) replayed: u64,
 }
-
-/// A failed search's verdicts, by [`Stream`].
-pub(crate) type SearchVerdicts = [Vec<Verdict>; 2];
 
 impl Verdicts {
     /// Starts a search at `level`, replaying `earlier` where it can.
-    pub(crate) fn start(&mut self, earlier: Option<&SearchVerdicts>, level: Compliance) {
+    pub(crate) fn start(&mut self, earlier: Option<&[Verdict]>, level: Compliance) {
+        self.earlier.clear();
+        self.earlier.extend_from_slice(earlier.unwrap_or_default());
         self.level = level;
+        self.asked = 0;
+        self.parted = earlier.is_none();
+        self.log.clear();
         self.replayed = 0;
-        for (index, stream) in self.streams.iter_mut().enumerate() {
-            stream.earlier.clear();
-            if let Some(earlier) = earlier {
-                stream.earlier.extend_from_slice(&earlier[index]);
-            }
-            stream.asked = 0;
-            stream.parted = earlier.is_none();
-            stream.log.clear();
-        }
     }
 
-    /// This search's verdicts, taken out.
-    pub(crate) fn take(&mut self) -> SearchVerdicts {
-        self.streams
-            .each_mut()
-            .map(|stream| std::mem::take(&mut stream.log))
-    }
-
-    /// The verdict of the next move of `stream`, where the earlier search's
-    /// is known to be this level's.
-    fn known(&self, stream: Stream) -> Option<Verdict> {
-        let log = &self.streams[stream as usize];
-        if log.parted {
+    /// The verdict of the next move, where the earlier search's is known
+    /// to be this level's.
+    fn known(&self) -> Option<Verdict> {
+        if self.parted {
             return None;
         }
-        match log.earlier.get(log.asked) {
+        match self.earlier.get(self.asked) {
             Some(&Err(cause)) if self.level.checks(cause) => Some(Err(cause)),
             _ => None,
         }
     }
 
-    /// Records the next move's verdict in `stream`.
-    fn record(&mut self, stream: Stream, verdict: Verdict) {
-        let log = &mut self.streams[stream as usize];
-        let same = match (stream, log.earlier.get(log.asked)) {
-            (_, None) => false,
-            (Stream::Tree, Some(earlier)) => earlier.is_ok() == verdict.is_ok(),
-            (Stream::Manoeuvres, Some(earlier)) => *earlier == verdict,
-        };
-        log.parted |= !same;
-        log.asked += 1;
-        log.log.push(verdict);
+    /// Records the next move's verdict.
+    fn record(&mut self, verdict: Verdict) {
+        if !self.parted && self.earlier.get(self.asked) != Some(&verdict) {
+            self.parted = true;
+        }
+        self.asked += 1;
+        self.log.push(verdict);
     }
 }
 
-/// A validator that records its verdicts in [`Verdicts`], in `stream`, and
-/// gives the earlier search's where they are known, without judging the
-/// move (the encounters in `state` are then left as they were: a refused
-/// move's state is not used).
+/// A validator that records its verdicts in [`Verdicts`] and gives the
+/// earlier search's where they are known, without judging the move (the
+/// encounters in `state` are then left as they were: a refused move's
+/// state is not used).
 pub(crate) struct Replaying<'a, V> {
     pub(crate) validator: &'a V,
     pub(crate) verdicts: &'a std::cell::RefCell<Verdicts>,
-    pub(crate) stream: Stream,
 }
 
 impl<V: MotionValidator> MotionValidator for Replaying<'_, V> {
@@ -223,7 +176,7 @@ impl<V: MotionValidator> MotionValidator for Replaying<'_, V> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
-        let known = self.verdicts.borrow().known(self.stream);
+        let known = self.verdicts.borrow().known();
         let verdict = match known {
             Some(verdict) => {
                 self.verdicts.borrow_mut().replayed += 1;
@@ -231,7 +184,7 @@ impl<V: MotionValidator> MotionValidator for Replaying<'_, V> {
             }
             None => self.validator.validate(leg, start_elapsed_s, state),
         };
-        self.verdicts.borrow_mut().record(self.stream, verdict);
+        self.verdicts.borrow_mut().record(verdict);
         verdict
     }
 }
@@ -321,7 +274,7 @@ mod tests {
             seed: 1,
             effort: SearchEffort::Full,
             refused: RejectionCounts::default(),
-            verdicts: SearchVerdicts::default(),
+            verdicts: Vec::new(),
         };
         failed.refused.set(RejectionCause::Clearance, 10);
         failed

@@ -24,7 +24,7 @@ use crate::constraint::Constraint;
 use crate::crossing::speed_on_course;
 use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
-use crate::replay::{Recording, Replaying, Stream};
+use crate::replay::{Recording, Replaying};
 use crate::safety::SafetyChecker;
 use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::validity::EncounterState;
@@ -238,7 +238,6 @@ impl<C: Constraint> Planner<C> {
         let checker = Replaying {
             validator: &checker,
             verdicts: &self.verdicts,
-            stream: Stream::Manoeuvres,
         };
         let recording = Recording::new(&checker, sailing.deadline);
         let start = Pose {

@@ -19,7 +19,7 @@ use crate::error::PlannerError;
 use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
 use crate::plan::{Plan, PlanStatistics, RejectionCounts};
 use crate::problem::PlanningProblem;
-use crate::replay::{FailedSearch, Replaying, Stream, Verdicts};
+use crate::replay::{FailedSearch, Replaying, Verdicts};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
 use crate::tree::Tree;
@@ -218,7 +218,7 @@ impl<C: Constraint> Planner<C> {
     ) -> Result<Plan, PlannerError> {
         let earlier = earlier
             .filter(|failed| failed.replayable_by(problem, &self.config, seed, effort))
-            .map(|failed| &failed.verdicts);
+            .map(|failed| failed.verdicts.as_slice());
         self.verdicts
             .get_mut()
             .start(earlier, self.config.compliance);
@@ -239,7 +239,7 @@ impl<C: Constraint> Planner<C> {
                     seed,
                     effort,
                     refused,
-                    verdicts: self.verdicts.get_mut().take(),
+                    verdicts: std::mem::take(&mut self.verdicts.get_mut().log),
                 }))
             }
             _ => None,
@@ -456,7 +456,6 @@ impl<C: Constraint> Planner<C> {
         let checker = Replaying {
             validator: &checker,
             verdicts: &self.verdicts,
-            stream: Stream::Tree,
         };
         let model = InstantTurn {
             max_turn_rad: config.max_turn_per_step_rad,
