@@ -497,11 +497,20 @@ pub fn is_port_turn_toward_vessel_moving(
     if !is_port_turn(turn, parameters) || !within_mtd(own.range_to(target), parameters) {
         return false;
     }
-    let bearing_now = angle::relative_bearing(own.position_m, own.course_rad, target.position_m);
-    let forward_of_beam = !(0.5 * PI..=1.5 * PI).contains(&bearing_now);
-    forward_of_beam
+    // The tests are pure and joined by "and", so their order changes no
+    // verdict, only the work: the risk on the new course first, which
+    // refuses most of the vessels the planner asks about (those its
+    // bearing gate lets through, `PortTurnGate`: 93 % of 3.7 M calls on
+    // 60 runs with 8 COLREGs-obeying targets), before the two bearings
+    // (decision 53).
+    let forward_of_beam = || {
+        let bearing_now =
+            angle::relative_bearing(own.position_m, own.course_rad, target.position_m);
+        !(0.5 * PI..=1.5 * PI).contains(&bearing_now)
+    };
+    crate::risk::assess_risk_moving(own, own_mps, target, target_mps, parameters).at_risk
+        && forward_of_beam()
         && is_on_port_side(own.position_m, course_before_rad, target.position_m)
-        && crate::risk::assess_risk_moving(own, own_mps, target, target_mps, parameters).at_risk
         && crate::crosses_ahead(own.position_m, own_mps, target.position_m, target_mps)
         && !crate::risk::assess_risk_moving(
             &crate::VesselState {

@@ -32,6 +32,8 @@ pub(crate) struct FailedSearch {
     pub(crate) seed: u64,
     pub(crate) effort: SearchEffort,
     pub(crate) refused: RejectionCounts,
+    /// Every verdict of its validity check, in the order asked ([`Verdicts`]).
+    pub(crate) verdicts: Vec<Verdict>,
 }
 
 impl FailedSearch {
@@ -58,6 +60,132 @@ impl FailedSearch {
                 .iter()
                 .all(|&(cause, count)| count == 0 || config.compliance.checks(cause))
             && *problem == self.problem
+    }
+}
+
+impl FailedSearch {
+    /// Whether a search of the same problem with `config`, `seed` and
+    /// `effort` asks the same moves in the same order as this one for as
+    /// long as their verdicts agree, so that [`Verdicts`] may replay this
+    /// one's: the same problem, seed, effort and settings but a compliance
+    /// level at most as strict, and no time budget (a search cut short by
+    /// the clock asks what the clock allows).
+    pub(crate) fn replayable_by(
+        &self,
+        problem: &PlanningProblem,
+        config: &PlannerConfig,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> bool {
+        PlannerConfig {
+            compliance: self.config.compliance,
+            ..*config
+        } == self.config
+            && config.time_budget_s.is_none()
+            && seed == self.seed
+            && effort == self.effort
+            && weaker_or_equal(config.compliance, self.config.compliance)
+            && *problem == self.problem
+    }
+}
+
+/// One verdict of the validity check.
+pub(crate) type Verdict = Result<(), RejectionCause>;
+
+/// The verdicts of one search, in the order its validity check is asked,
+/// and those of an earlier, failed search of the same problem at a
+/// stricter level of the graded fallback, replayed where they are known
+/// (decision 53).
+///
+/// A search is a pure function of the problem, the settings, the seed and
+/// the effort, and of its verdicts: which move it asks next follows from
+/// the verdicts before (module documentation). So a weaker level asks the
+/// stricter search's moves in the same order for as long as every verdict
+/// agrees, and where the stricter search refused a move for a duty the
+/// weaker level checks too ([`Compliance::checks`](crate::Compliance::checks)), the weaker level refuses it
+/// for the same duty (the checks before it pass, being a subset of those
+/// that passed): that verdict is taken from the earlier search instead of
+/// judged again. Every other move is judged; from the first verdict that
+/// differs from the earlier search's, the two searches part and nothing
+/// more is replayed. A move the earlier search accepted is judged again,
+/// for the encounters in force at its end. The verdicts, and so the plans,
+/// are the same as without the replay; only the work differs.
+#[derive(Debug, Default)]
+pub(crate) struct Verdicts {
+    /// The earlier search's verdicts (empty: none to replay).
+    earlier: Vec<Verdict>,
+    /// This search's level.
+    level: Compliance,
+    /// How many verdicts this search has given.
+    asked: usize,
+    /// Whether this search has parted from the earlier one.
+    parted: bool,
+    /// This search's verdicts, in order.
+    pub(crate) log: Vec<Verdict>,
+    /// How many verdicts were replayed rather than judged.
+    pub(crate) replayed: u64,
+}
+
+impl Verdicts {
+    /// Starts a search at `level`, replaying `earlier` where it can.
+    pub(crate) fn start(&mut self, earlier: Option<&[Verdict]>, level: Compliance) {
+        self.earlier.clear();
+        self.earlier.extend_from_slice(earlier.unwrap_or_default());
+        self.level = level;
+        self.asked = 0;
+        self.parted = earlier.is_none();
+        self.log.clear();
+        self.replayed = 0;
+    }
+
+    /// The verdict of the next move, where the earlier search's is known
+    /// to be this level's.
+    fn known(&self) -> Option<Verdict> {
+        if self.parted {
+            return None;
+        }
+        match self.earlier.get(self.asked) {
+            Some(&Err(cause)) if self.level.checks(cause) => Some(Err(cause)),
+            _ => None,
+        }
+    }
+
+    /// Records the next move's verdict.
+    fn record(&mut self, verdict: Verdict) {
+        if !self.parted && self.earlier.get(self.asked) != Some(&verdict) {
+            self.parted = true;
+        }
+        self.asked += 1;
+        self.log.push(verdict);
+    }
+}
+
+/// A validator that records its verdicts in [`Verdicts`] and gives the
+/// earlier search's where they are known, without judging the move (the
+/// encounters in `state` are then left as they were: a refused move's
+/// state is not used).
+pub(crate) struct Replaying<'a, V> {
+    pub(crate) validator: &'a V,
+    pub(crate) verdicts: &'a std::cell::RefCell<Verdicts>,
+}
+
+impl<V: MotionValidator> MotionValidator for Replaying<'_, V> {
+    fn validate(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let known = self.verdicts.borrow().known();
+        let verdict = match known {
+            Some(verdict) => {
+                self.verdicts.borrow_mut().replayed += 1;
+                verdict
+            }
+            None => self.validator.validate(leg, start_elapsed_s, state),
+        };
+        self.verdicts.borrow_mut().record(verdict);
+        verdict
     }
 }
 
@@ -146,6 +274,7 @@ mod tests {
             seed: 1,
             effort: SearchEffort::Full,
             refused: RejectionCounts::default(),
+            verdicts: Vec::new(),
         };
         failed.refused.set(RejectionCause::Clearance, 10);
         failed

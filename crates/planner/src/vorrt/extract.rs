@@ -24,7 +24,7 @@ use crate::constraint::Constraint;
 use crate::crossing::speed_on_course;
 use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
-use crate::replay::Recording;
+use crate::replay::{Recording, Replaying};
 use crate::safety::SafetyChecker;
 use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
 use crate::validity::EncounterState;
@@ -235,6 +235,10 @@ impl<C: Constraint> Planner<C> {
         )
         .with_steady_course(problem.steady_course_rad)
         .with_constraint(&self.constraint);
+        let checker = Replaying {
+            validator: &checker,
+            verdicts: &self.verdicts,
+        };
         let recording = Recording::new(&checker, sailing.deadline);
         let start = Pose {
             position_m: sailing.own.position_m,

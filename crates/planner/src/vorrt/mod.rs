@@ -19,7 +19,7 @@ use crate::error::PlannerError;
 use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
 use crate::plan::{Plan, PlanStatistics, RejectionCounts};
 use crate::problem::PlanningProblem;
-use crate::replay::FailedSearch;
+use crate::replay::{FailedSearch, Replaying, Verdicts};
 use crate::safety::SafetyChecker;
 use crate::sampler::Sampler;
 use crate::tree::Tree;
@@ -27,6 +27,7 @@ use crate::validity::{EncounterState, MotionValidator, check_legs_with};
 use extract::Expired;
 pub use extract::{ClearanceLevel, LANE_CROSSING_LADDER, ManeuverShape, Probe, ROOT_LADDER, Rung};
 use glam::DVec2;
+use std::cell::RefCell;
 use std::time::Instant;
 use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
@@ -72,6 +73,9 @@ pub struct Planner<C = NoConstraint> {
     scratch: EncounterState,
     /// The last search, when it found no safe path.
     last_failure: Option<Box<FailedSearch>>,
+    /// The verdicts of the search under way, and those of an earlier one
+    /// it replays (decision 53).
+    verdicts: RefCell<Verdicts>,
 }
 
 enum Growth {
@@ -106,6 +110,7 @@ impl<C: Constraint> Planner<C> {
             tracks: Vec::new(),
             scratch: EncounterState::default(),
             last_failure: None,
+            verdicts: RefCell::new(Verdicts::default()),
         })
     }
 
@@ -171,6 +176,52 @@ impl<C: Constraint> Planner<C> {
         seed: u64,
         effort: SearchEffort,
     ) -> Result<Plan, PlannerError> {
+        self.plan_replaying(problem, seed, effort, None)
+    }
+
+    /// As [`plan_with`](Self::plan_with), after `earlier` (a planner of the
+    /// graded fallback at a stricter level, or at the same) found no safe
+    /// path for the same problem with the same settings but the level, seed
+    /// and effort: the moves its search refused for a duty this level checks
+    /// too are refused again without being judged, for as long as this
+    /// search asks the same moves as that one (`Verdicts`, decision 53).
+    /// The plan, or the failure, is the one [`plan_with`](Self::plan_with)
+    /// gives, bit for bit; only the work differs. With any other `earlier`
+    /// it is [`plan_with`](Self::plan_with).
+    ///
+    /// # Errors
+    /// As [`plan`](Self::plan).
+    pub fn plan_after(
+        &mut self,
+        problem: &PlanningProblem,
+        seed: u64,
+        effort: SearchEffort,
+        earlier: &Planner<C>,
+    ) -> Result<Plan, PlannerError> {
+        let failed = earlier.last_failure.as_deref();
+        self.plan_replaying(problem, seed, effort, failed)
+    }
+
+    /// How many verdicts the last search took from an earlier one
+    /// ([`plan_after`](Self::plan_after)) rather than judged.
+    #[must_use]
+    pub fn verdicts_replayed(&self) -> u64 {
+        self.verdicts.borrow().replayed
+    }
+
+    fn plan_replaying(
+        &mut self,
+        problem: &PlanningProblem,
+        seed: u64,
+        effort: SearchEffort,
+        earlier: Option<&FailedSearch>,
+    ) -> Result<Plan, PlannerError> {
+        let earlier = earlier
+            .filter(|failed| failed.replayable_by(problem, &self.config, seed, effort))
+            .map(|failed| failed.verdicts.as_slice());
+        self.verdicts
+            .get_mut()
+            .start(earlier, self.config.compliance);
         // Budgets follow the route length (`PlannerConfig::for_route`), and a
         // failure that spent every phase's node quota says so.
         let configured = self.config;
@@ -188,6 +239,7 @@ impl<C: Constraint> Planner<C> {
                     seed,
                     effort,
                     refused,
+                    verdicts: std::mem::take(&mut self.verdicts.get_mut().log),
                 }))
             }
             _ => None,
@@ -401,6 +453,10 @@ impl<C: Constraint> Planner<C> {
         )
         .with_steady_course(problem.steady_course_rad)
         .with_constraint(&self.constraint);
+        let checker = Replaying {
+            validator: &checker,
+            verdicts: &self.verdicts,
+        };
         let model = InstantTurn {
             max_turn_rad: config.max_turn_per_step_rad,
         };
@@ -570,97 +626,4 @@ fn close_onto_goal<V: MotionValidator>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use vorrt_colregs::VesselState;
-    use vorrt_jfs::TargetState;
-
-    /// The smallest distance between hulls along `plan`, sampled every 2 s,
-    /// to a target on `track`.
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        clippy::cast_precision_loss,
-        reason = "a plan's duration is finite and positive, a few thousand 2 s steps"
-    )]
-    fn min_hull_distance_m(plan: &Plan, track: &LinearTrack, own_length_m: f64) -> f64 {
-        let contact_m = vorrt_colregs::rules::contact_range_m(own_length_m, track.vessel.length_m);
-        let steps = (plan.duration_s() / 2.0).ceil() as usize;
-        (0..=steps)
-            .filter_map(|step| {
-                let elapsed_s = step as f64 * 2.0;
-                let pose = plan.pose_at(elapsed_s)?;
-                Some(pose.position_m.distance(track.position_at(elapsed_s)) - contact_m)
-            })
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    #[test]
-    fn the_manoeuvre_passes_at_the_preferred_distance_where_sea_room_allows() {
-        // A vessel lying still 330 m east of ownship's route north, its hull
-        // 255 m off ownship's: d_th (200 m) is kept on the route itself.
-        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
-        let target = TargetState::constant_velocity(VesselState::new(
-            DVec2::new(330.0, 6000.0),
-            0.0,
-            0.0,
-            50.0,
-        ));
-        let track = target.track();
-        let problem = PlanningProblem::new(own, DVec2::new(0.0, 12_000.0), vec![target]);
-        let pass_m = |factor: f64| {
-            let config = PlannerConfig {
-                preferred_clearance_factor: factor,
-                ..PlannerConfig::default()
-            };
-            let plan = Planner::new(config).unwrap().plan(&problem, 7).unwrap();
-            min_hull_distance_m(&plan, &track, own.length_m)
-        };
-        let (preferred, floor) = (pass_m(2.0), pass_m(1.0));
-        let clearance_m = PlannerConfig::default().clearance_m;
-        // The chords of the turns are within a few metres of the arcs.
-        assert!(preferred >= 2.0 * clearance_m - 5.0, "{preferred} m");
-        assert!(floor >= clearance_m - 5.0, "{floor} m");
-        assert!(floor < preferred, "{floor} m vs {preferred} m");
-    }
-
-    /// A goal no path reaches (a vessel lies stopped on it), with phases
-    /// that end on their sample budget.
-    fn blocked() -> (PlanningProblem, PlannerConfig) {
-        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
-        let goal_m = DVec2::new(0.0, 3000.0);
-        let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
-        let config = PlannerConfig {
-            nodes_per_phase: 40,
-            samples_per_phase: 40,
-            nodes_per_route_step: 0.0,
-            max_restarts: 1,
-            ..PlannerConfig::default()
-        };
-        (PlanningProblem::new(own, goal_m, vec![blocker]), config)
-    }
-
-    fn samples_of(result: Result<Plan, PlannerError>) -> u64 {
-        result
-            .expect_err("the goal is blocked")
-            .statistics()
-            .expect("a failed search says what it did")
-            .samples
-    }
-
-    #[test]
-    fn first_phase_effort_skips_phase_two_and_keeps_the_restarts() {
-        let (problem, config) = blocked();
-        let mut planner = Planner::new(config).expect("valid");
-        let full = samples_of(planner.plan(&problem, 3));
-        let first = samples_of(planner.plan_with(&problem, 3, SearchEffort::FirstPhase));
-        // Two attempts (one restart) of two phases, or of one, 40 samples each.
-        assert_eq!(full, 2 * 2 * 40);
-        assert_eq!(first, 2 * 40);
-        // The default effort is the full search, as `plan` runs it.
-        assert_eq!(
-            samples_of(planner.plan_with(&problem, 3, SearchEffort::default())),
-            full
-        );
-    }
-}
+mod tests;

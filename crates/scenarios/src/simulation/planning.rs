@@ -250,8 +250,17 @@ fn search<C: Constraint>(
         }) {
             continue;
         }
-        let planner = &mut planners[index];
-        match planner.plan_with(problem, call.seed, effort) {
+        // After a failed level, its verdicts that this one would repeat are
+        // replayed (`Planner::plan_after`, decision 53): the same plan or
+        // failure, for less work.
+        let found = match failed {
+            Some(failed) => {
+                let (stricter, rest) = planners.split_at_mut(index);
+                rest[0].plan_after(problem, call.seed, effort, &stricter[failed])
+            }
+            None => planners[index].plan_with(problem, call.seed, effort),
+        };
+        match found {
             Ok(plan) => {
                 attempts.samples_drawn += plan.statistics.samples;
                 return (Some((plan, compliance)), attempts);

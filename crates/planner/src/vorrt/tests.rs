@@ -1,0 +1,158 @@
+//! Tests of the planner's search.
+
+use super::*;
+use crate::Compliance;
+use vorrt_colregs::VesselState;
+use vorrt_jfs::TargetState;
+
+/// The smallest distance between hulls along `plan`, sampled every 2 s,
+/// to a target on `track`.
+#[expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    clippy::cast_precision_loss,
+    reason = "a plan's duration is finite and positive, a few thousand 2 s steps"
+)]
+fn min_hull_distance_m(plan: &Plan, track: &LinearTrack, own_length_m: f64) -> f64 {
+    let contact_m = vorrt_colregs::rules::contact_range_m(own_length_m, track.vessel.length_m);
+    let steps = (plan.duration_s() / 2.0).ceil() as usize;
+    (0..=steps)
+        .filter_map(|step| {
+            let elapsed_s = step as f64 * 2.0;
+            let pose = plan.pose_at(elapsed_s)?;
+            Some(pose.position_m.distance(track.position_at(elapsed_s)) - contact_m)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn the_manoeuvre_passes_at_the_preferred_distance_where_sea_room_allows() {
+    // A vessel lying still 330 m east of ownship's route north, its hull
+    // 255 m off ownship's: d_th (200 m) is kept on the route itself.
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+    let target =
+        TargetState::constant_velocity(VesselState::new(DVec2::new(330.0, 6000.0), 0.0, 0.0, 50.0));
+    let track = target.track();
+    let problem = PlanningProblem::new(own, DVec2::new(0.0, 12_000.0), vec![target]);
+    let pass_m = |factor: f64| {
+        let config = PlannerConfig {
+            preferred_clearance_factor: factor,
+            ..PlannerConfig::default()
+        };
+        let plan = Planner::new(config).unwrap().plan(&problem, 7).unwrap();
+        min_hull_distance_m(&plan, &track, own.length_m)
+    };
+    let (preferred, floor) = (pass_m(2.0), pass_m(1.0));
+    let clearance_m = PlannerConfig::default().clearance_m;
+    // The chords of the turns are within a few metres of the arcs.
+    assert!(preferred >= 2.0 * clearance_m - 5.0, "{preferred} m");
+    assert!(floor >= clearance_m - 5.0, "{floor} m");
+    assert!(floor < preferred, "{floor} m vs {preferred} m");
+}
+
+/// A goal no path reaches (a vessel lies stopped on it), with phases
+/// that end on their sample budget.
+fn blocked() -> (PlanningProblem, PlannerConfig) {
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let goal_m = DVec2::new(0.0, 3000.0);
+    let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
+    let config = PlannerConfig {
+        nodes_per_phase: 40,
+        samples_per_phase: 40,
+        nodes_per_route_step: 0.0,
+        max_restarts: 1,
+        ..PlannerConfig::default()
+    };
+    (PlanningProblem::new(own, goal_m, vec![blocker]), config)
+}
+
+fn samples_of(result: Result<Plan, PlannerError>) -> u64 {
+    result
+        .expect_err("the goal is blocked")
+        .statistics()
+        .expect("a failed search says what it did")
+        .samples
+}
+
+#[test]
+fn first_phase_effort_skips_phase_two_and_keeps_the_restarts() {
+    let (problem, config) = blocked();
+    let mut planner = Planner::new(config).expect("valid");
+    let full = samples_of(planner.plan(&problem, 3));
+    let first = samples_of(planner.plan_with(&problem, 3, SearchEffort::FirstPhase));
+    // Two attempts (one restart) of two phases, or of one, 40 samples each.
+    assert_eq!(full, 2 * 2 * 40);
+    assert_eq!(first, 2 * 40);
+    // The default effort is the full search, as `plan` runs it.
+    assert_eq!(
+        samples_of(planner.plan_with(&problem, 3, SearchEffort::default())),
+        full
+    );
+}
+
+/// A crossing from starboard whose goal lies beyond a vessel lying stopped
+/// on it: every level fails, the full one with refusals of every kind.
+fn crossing_onto_a_blocked_goal() -> (PlanningProblem, PlannerConfig) {
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let goal_m = DVec2::new(0.0, 3000.0);
+    let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
+    let crossing = TargetState::constant_velocity(VesselState::new(
+        DVec2::new(1500.0, 1500.0),
+        270f64.to_radians(),
+        6.0,
+        50.0,
+    ));
+    let config = PlannerConfig {
+        nodes_per_phase: 60,
+        samples_per_phase: 300,
+        nodes_per_route_step: 0.0,
+        max_restarts: 1,
+        ..PlannerConfig::default()
+    };
+    (
+        PlanningProblem::new(own, goal_m, vec![blocker, crossing]),
+        config,
+    )
+}
+
+#[test]
+fn a_weaker_level_after_a_failed_one_replays_its_verdicts_and_fails_the_same() {
+    let (problem, config) = crossing_onto_a_blocked_goal();
+    let mut full = Planner::new(config).expect("valid");
+    assert!(full.plan(&problem, 3).is_err());
+    for compliance in [
+        Compliance::Full,
+        Compliance::Directions,
+        Compliance::SafetyOnly,
+    ] {
+        let weaker = PlannerConfig {
+            compliance,
+            ..config
+        };
+        let alone = Planner::new(weaker).expect("valid").plan(&problem, 3);
+        let mut after = Planner::new(weaker).expect("valid");
+        let replayed = after.plan_after(&problem, 3, SearchEffort::Full, &full);
+        // The same failure, the same samples, nodes and refusals by cause.
+        let statistics = |result: &Result<Plan, PlannerError>| {
+            *result
+                .as_ref()
+                .expect_err("blocked")
+                .statistics()
+                .expect("statistics")
+        };
+        let (alone, replayed) = (statistics(&alone), statistics(&replayed));
+        assert_eq!(alone.samples, replayed.samples, "{compliance:?}");
+        assert_eq!(alone.nodes, replayed.nodes, "{compliance:?}");
+        assert_eq!(alone.rejections, replayed.rejections, "{compliance:?}");
+        // With less judging: refusals of the full search were taken from it.
+        assert!(after.verdicts_replayed() > 0, "{compliance:?}");
+    }
+    // Another seed is another search: nothing is replayed.
+    let mut other = Planner::new(config).expect("valid");
+    assert!(
+        other
+            .plan_after(&problem, 4, SearchEffort::Full, &full)
+            .is_err()
+    );
+    assert_eq!(other.verdicts_replayed(), 0);
+}
