@@ -161,16 +161,16 @@ fn holding_the_alteration_until_the_vessel_from_port_is_past_is_no_finding() {
 /// from `gives_way_at_s`, if any, it turns 35° to starboard at 1°/s, the
 /// give-way action of a vessel that obeys the rules.
 fn crossing_from_port(start_m: DVec2, gives_way_at_s: Option<f64>) -> RecordedTrack {
-    let mut position_m = start_m;
+    let mut here_m = start_m;
     let mut course_rad = 90f64.to_radians();
     let mut positions_m = Vec::new();
     for time_s in times_s() {
-        positions_m.push(position_m);
+        positions_m.push(here_m);
         if gives_way_at_s.is_some_and(|at_s| time_s >= at_s) {
             let limit = 1f64.to_radians() * STEP_S;
             course_rad += angle::signed_turn(course_rad, 125f64.to_radians()).clamp(-limit, limit);
         }
-        position_m += angle::velocity(course_rad, SPEED_MPS) * STEP_S;
+        here_m += angle::velocity(course_rad, SPEED_MPS) * STEP_S;
     }
     RecordedTrack {
         name: "TS2".into(),
