@@ -19,7 +19,7 @@
 //! | a speed change beyond the stand-on tolerance | [`is_speed_change`] | 17(a)(i) |
 //! | a course change beyond the stand-on tolerance | [`is_stand_on_course_change`] | 17(a)(i) |
 //! | the target on ownship's port side | [`is_on_port_side`] | 17(c) |
-//! | a port turn toward a port-side vessel onto a risk of collision, crossing ahead of it | [`is_port_turn_toward_vessel`] | 2(a), 8(a), 17(c) |
+//! | a port turn toward a port-side vessel onto a risk of collision | [`is_port_turn_toward_vessel`] | 2(a), 8(a), 17(c) |
 //! | ownship gives way in an encounter | [`gives_way`] | 16 |
 //! | ownship gives way to any target | [`giving_way_to_any`] | 16, 17 |
 //! | the give-way vessel inside the stand-on action range | [`within_action_range`] | 17(a)(ii) |
@@ -426,22 +426,29 @@ pub fn is_on_port_side(
 /// port side of the course before ([`is_on_port_side`]) and lies forward of
 /// the beam on the new course, and on the new course it is a risk of
 /// collision ([`assess_risk`](crate::assess_risk): inside the MTD, a closest
-/// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)) that
-/// ownship would resolve by crossing ahead of it
-/// ([`crosses_ahead`](crate::crosses_ahead)): the vessel is put on a
-/// collision course, to be crossed ahead of within the risk distance,
-/// where on the course held before it was no risk: the turn made the
-/// danger (a vessel already a risk is an encounter in force, whose own
-/// rules judge the turn: 14, 15, 17(a)(i), 17(c)). A
-/// return that passes astern of the vessel is not one (the clearance checks
-/// keep `d_th` there), nor is a vessel that ownship overtakes, or that
-/// overtakes it, on the new course: rule 13 keeps them apart (the
-/// clearance, and no cutting across the overtaken vessel's bow). This is
-/// the return toward the goal that swings onto a vessel crossing from port
-/// after an alteration to starboard for another (issue 24), which a latch
-/// made only on the new course would judge as a stand-on encounter. The
-/// planner refuses such a leg and the evaluation finds it, with this one
-/// predicate.
+/// approach ahead under [`risk_cpa_m`](RuleParameters::risk_cpa_m)) where
+/// on the course held before it was no risk: the turn made the danger (a
+/// vessel already a risk is an encounter in force, whose own rules judge
+/// the turn: 14, 15, 17(a)(i), 17(c)). Nor is a vessel that ownship
+/// overtakes, or that overtakes it, on the new course: rule 13 keeps them
+/// apart (the clearance, and no cutting across the overtaken vessel's bow).
+///
+/// Which of the two would cross ahead of the other is no part of it
+/// (decision 51): a return that brings a vessel from port onto a collision
+/// course makes ownship the stand-on vessel of a new crossing whichever way
+/// it would end, and that way is what the other vessel's own action
+/// decides (giving way to starboard, it passes astern). Judged on the
+/// observed states at the latch, part way through that vessel's turn, the
+/// crossing's side flipped with it, so the same track was a finding with a
+/// vessel that acted and none with one that did not, and the planner, which
+/// predicts the vessel's steady motion, could not see it. A return that
+/// passes astern of the vessel beyond `risk_cpa_m` is not one.
+///
+/// This is the return toward the goal that swings onto a vessel crossing
+/// from port after an alteration to starboard for another (issue 24), which
+/// a latch made only on the new course would judge as a stand-on encounter.
+/// The planner refuses such a leg and the evaluation finds it, with this
+/// one predicate.
 ///
 /// ```
 /// use vorrt_colregs::{rules::is_port_turn_toward_vessel, RuleParameters, VesselState};
@@ -455,9 +462,13 @@ pub fn is_on_port_side(
 /// // Held on 035 the same vessel passes 1.1 nm off: no turn, no finding.
 /// let held = VesselState { course_rad: 35f64.to_radians(), ..own };
 /// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &held, &crossing, &params));
-/// // Coming back to 330 instead passes 860 m astern of it: no finding.
+/// // Coming back to 330 passes 860 m astern of it: still a collision
+/// // course made by the turn, a finding.
 /// let astern = VesselState { course_rad: 330f64.to_radians(), ..own };
-/// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &astern, &crossing, &params));
+/// assert!(is_port_turn_toward_vessel(35f64.to_radians(), &astern, &crossing, &params));
+/// // Coming back to 300 passes more than 1 nm astern: no finding.
+/// let wide = VesselState { course_rad: 300f64.to_radians(), ..own };
+/// assert!(!is_port_turn_toward_vessel(35f64.to_radians(), &wide, &crossing, &params));
 /// ```
 #[must_use]
 pub fn is_port_turn_toward_vessel(
@@ -511,7 +522,6 @@ pub fn is_port_turn_toward_vessel_moving(
     crate::risk::assess_risk_moving(own, own_mps, target, target_mps, parameters).at_risk
         && forward_of_beam()
         && is_on_port_side(own.position_m, course_before_rad, target.position_m)
-        && crate::crosses_ahead(own.position_m, own_mps, target.position_m, target_mps)
         && !crate::risk::assess_risk_moving(
             &crate::VesselState {
                 course_rad: course_before_rad,

@@ -156,3 +156,95 @@ fn holding_the_alteration_until_the_vessel_from_port_is_past_is_no_finding() {
         judgement.targets[1].findings
     );
 }
+
+/// TS2's track for [`run_19`]: heading east at [`SPEED_MPS`] from `start_m`;
+/// from `gives_way_at_s`, if any, it turns 35° to starboard at 1°/s, the
+/// give-way action of a vessel that obeys the rules.
+fn crossing_from_port(start_m: DVec2, gives_way_at_s: Option<f64>) -> RecordedTrack {
+    let mut here_m = start_m;
+    let mut course_rad = 90f64.to_radians();
+    let mut positions_m = Vec::new();
+    for time_s in times_s() {
+        positions_m.push(here_m);
+        if gives_way_at_s.is_some_and(|at_s| time_s >= at_s) {
+            let limit = 1f64.to_radians() * STEP_S;
+            course_rad += angle::signed_turn(course_rad, 125f64.to_radians()).clamp(-limit, limit);
+        }
+        here_m += angle::velocity(course_rad, SPEED_MPS) * STEP_S;
+    }
+    RecordedTrack {
+        name: "TS2".into(),
+        length_m: 100.0,
+        positions_m,
+        courses_rad: None,
+        observation: vorrt_colregs::observed::TrackObservation::default(),
+    }
+}
+
+/// Where the return to 330° of [`run_19`] ends: 65° at 0.5°/s (130 s, 26
+/// steps), on the step after.
+const RETURN_19_END_STEP: usize = RETURN_AT_STEP as usize + 27;
+
+/// The pattern of open-sea run 19 (2 targets, seed 11): ownship, altered to
+/// starboard, comes back to port, to 330°, with TS2 crossing from port
+/// 5.2 nm off the bow where the turn ends, just beyond the MTD; held on,
+/// TS2 would cross about 810 m ahead of ownship (ownship passing astern of
+/// it), where on 035° it would pass 2.4 nm off; `gives_way_at_s`: TS2
+/// answers with 35° to starboard then, as a COLREGs-obeying vessel did in
+/// run 19 just as risk arose.
+fn run_19(gives_way_at_s: Option<f64>) -> ObservedJudgement {
+    let (positions_m, courses_rad) = ownship(RETURN_AT_S, 330.0);
+    let ts2_start = positions_m[RETURN_19_END_STEP] + DVec2::new(-7900.0, 5500.0)
+        - DVec2::new(SPEED_MPS * crossing_at_s(), 0.0);
+    let recording = Recording {
+        ownship: RecordedTrack {
+            name: "ownship".into(),
+            length_m: 100.0,
+            positions_m,
+            courses_rad: Some(courses_rad),
+            observation: vorrt_colregs::observed::TrackObservation::default(),
+        },
+        targets: vec![
+            target("TS1", DVec2::new(7000.0, 7000.0), 270.0),
+            crossing_from_port(ts2_start, gives_way_at_s),
+        ],
+        times_s: times_s(),
+    };
+    judge(&recording, &ObservedParameters::default()).expect("a valid recording")
+}
+
+/// When the return of [`run_19`] ends, seconds.
+fn crossing_at_s() -> f64 {
+    times_s()[RETURN_19_END_STEP]
+}
+
+#[test]
+fn a_return_onto_a_vessel_from_port_is_a_finding_whichever_vessel_would_cross_ahead() {
+    // Decision 51. TS2 keeps on: it would cross ahead of ownship, inside
+    // 1 nm. The return made it a collision course all the same (it was
+    // none on 035°), and made ownship the stand-on vessel of a new
+    // crossing: a finding (before, none: ownship passed astern).
+    let kept_on = run_19(None);
+    let ts2 = &kept_on.targets[1];
+    assert_eq!(
+        ts2.latch.map(|latch| latch.encounter),
+        Some(Encounter::CrossingStandOn)
+    );
+    assert!(ts2.min_distance_m < 1852.0, "{}", ts2.min_distance_m);
+    assert!(
+        names(&kept_on, 1).contains(&"port_turn_toward_vessel"),
+        "TS2: {:?}",
+        ts2.findings
+    );
+    // TS2 gives way to starboard as risk arises, as it did in run 19: the
+    // same turn of ownship, the same finding (before, a finding only here,
+    // where TS2's turn, half seen at the latch, put ownship ahead of it).
+    for gives_way_at_s in [crossing_at_s() + 30.0, crossing_at_s() + 60.0] {
+        let answered = run_19(Some(gives_way_at_s));
+        assert!(
+            names(&answered, 1).contains(&"port_turn_toward_vessel"),
+            "TS2 giving way at {gives_way_at_s} s: {:?}",
+            answered.targets[1].findings
+        );
+    }
+}

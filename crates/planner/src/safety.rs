@@ -408,12 +408,12 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// not, as an observer judges the turn (rules 2(a), 8(a), 17(c)): a turn
     /// to port from `course_before_rad` (the course held before the turn)
     /// toward a vessel on the port side forward of the beam that makes it a
-    /// risk of collision to be crossed ahead of, where on the course before
-    /// it was none ([`is_port_turn_toward_vessel`](vorrt_colregs::rules::is_port_turn_toward_vessel)), creates a new danger,
-    /// such as a return toward the goal onto a vessel crossing from port
-    /// (issue 24; decision 28). `candidate` is the first piece on the
-    /// settled course; the manoeuvre search then holds the alteration
-    /// longer, or passes astern of the vessel.
+    /// risk of collision (whichever would cross ahead), where on the course
+    /// before it was none ([`is_port_turn_toward_vessel`](vorrt_colregs::rules::is_port_turn_toward_vessel)), creates a new
+    /// danger, such as a return toward the goal onto a vessel crossing from
+    /// port (issue 24; decisions 28 and 51). `candidate` is a piece on the
+    /// settled course or a chord of the turn; the manoeuvre search then holds the alteration
+    /// longer, or passes astern of the vessel beyond the risk distance.
     ///
     /// # Errors
     /// [`ManeuverViolation::PortTurnTowardVessel`].

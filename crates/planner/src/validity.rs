@@ -545,11 +545,23 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                     &state.alterations,
                     segment.margin_m,
                 )?;
+                // A port turn is seen on the way too: a vessel from port
+                // brought onto a collision course by a course the swing
+                // passes through is latched there by the evaluation (its
+                // course over ground part way round), and a vessel that
+                // acts answers it (decision 51).
+                if piece.turning {
+                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                }
             } else {
-                if candidate.start_elapsed_s <= settled_until_s {
+                if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
                     // The course the leg's turn settles on, judged against
                     // every vessel while an observer still sees the turn
-                    // (decision 28).
+                    // (decision 28), on every piece that starts within the
+                    // window and on the first after it: a vessel that comes
+                    // within MTD part way through the window's last piece
+                    // is latched there by the evaluation, and is seen at the
+                    // next piece's start (decision 51).
                     checker.check_settled_turn(before_course_rad, &candidate)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;

@@ -116,7 +116,15 @@ fn stand_on_turns_keep_rule_17_along_the_whole_turn() {
         let record = simulate(&scenario, 1).expect("valid settings");
         let evaluation = evaluate(&scenario, &record);
         let judged = &evaluation.targets[0];
-        assert_eq!(judged.role, Role::StandOn, "{target}");
+        // The first is no encounter since decision 51: the return to port
+        // that made TS1, crossing from port, one ownship stood on for
+        // (latched at 700 s) is refused, and the alteration is held until
+        // the return makes it no risk.
+        assert!(
+            matches!(judged.role, Role::StandOn | Role::None),
+            "{target}: {:?}",
+            judged.role
+        );
         assert!(!judged.collision && judged.clearance_kept, "{target}");
         assert!(evaluation.compliant, "{target}: {:?}", judged.violations);
     }

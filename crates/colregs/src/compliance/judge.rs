@@ -15,6 +15,7 @@ use crate::rules::{
     is_port_turn, is_port_turn_toward_vessel, is_speed_change, is_stand_on_course_change,
     steady_course_rad, within_action_range,
 };
+use crate::vessel::VesselState;
 
 /// The findings and rule scores built up by the judgement steps.
 #[derive(Debug, Default)]
@@ -382,7 +383,20 @@ impl Findings {
             return;
         };
         let at_latch = &samples[index];
-        if !is_port_turn_toward_vessel(before_rad, &at_latch.own, &at_latch.target, rules) {
+        // The other vessel as it was moving when ownship turned: its course
+        // held before any turn of its own of the last window, by the same
+        // rule. A vessel that answers the turn (giving way to starboard, or
+        // turning away) is seen part way round at the latch, and what it
+        // then does is no part of whether ownship's turn put it in danger;
+        // the planner, predicting its steady motion, judges the same
+        // (decision 51).
+        let target_courses_rad: Vec<f64> = history.iter().map(|s| s.target.course_rad).collect();
+        let target = VesselState {
+            course_rad: steady_course_rad(&times_s, &target_courses_rad, STEADY_COURSE_WINDOW_S)
+                .unwrap_or(at_latch.target.course_rad),
+            ..at_latch.target
+        };
+        if !is_port_turn_toward_vessel(before_rad, &at_latch.own, &target, rules) {
             return;
         }
         self.violations

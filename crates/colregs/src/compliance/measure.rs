@@ -9,8 +9,8 @@ use crate::latch::{EncounterLatch, has_passed};
 use crate::parameters::RuleParameters;
 use crate::passing::PassingSide;
 use crate::rules::{
-    course_change_rad, in_contact, is_alteration_eased_back, is_detectable_turn,
-    is_measured_readily_apparent, keeps_clearance,
+    STEADY_TURN_RATE_RAD_S, course_change_rad, in_contact, is_alteration_eased_back,
+    is_detectable_turn, is_measured_readily_apparent, keeps_clearance,
 };
 use crate::vessel::VesselState;
 use glam::DVec2;
@@ -216,6 +216,26 @@ impl Measurements {
             }
             _ => before_cpa,
         };
+        // A turn under way where the showing ends (at the closest approach)
+        // is shown to its end, up to one reaction time later: an alteration
+        // begun at once at the rate of turn, for a vessel whose range opens
+        // part way round it (a vessel overtaken from close, its closest
+        // approach 60-100 s after the latch), is the whole alteration an
+        // observer sees made, not the part reached when the range began to
+        // open (decision 51).
+        let shown = match window.start {
+            start if start < samples.len() => {
+                let count = through_the_turn(
+                    samples,
+                    latch,
+                    start,
+                    shown.len(),
+                    time_of_min_s + scoring.reaction_time_s,
+                );
+                &samples[start..start + count]
+            }
+            _ => shown,
+        };
         let courses: Vec<f64> = std::iter::once(latch.reference_course_rad)
             .chain(in_force.iter().map(|s| s.own.course_rad))
             .collect();
@@ -249,6 +269,52 @@ impl Measurements {
             action_required: action_required(latch_sample, scoring),
         }
     }
+}
+
+/// How many samples from `start` show the alteration: the first `count`,
+/// and after them those of a turn under way at the last of them that
+/// enlarges the alteration from `latch`'s reference (each step turning the
+/// way the alteration then lies, faster than [`STEADY_TURN_RATE_RAD_S`], the
+/// rate of a course held steady), up to `until_s`. A turn back toward the
+/// reference (a return begun before the closest approach) adds nothing.
+fn through_the_turn(
+    samples: &[EncounterSample],
+    latch: &EncounterLatch,
+    start: usize,
+    count: usize,
+    until_s: f64,
+) -> usize {
+    let mut end = start + count;
+    let turn_rad = |index: usize| {
+        let step_s = samples[index].time_s - samples[index - 1].time_s;
+        let turn = angle::signed_turn(
+            samples[index - 1].own.course_rad,
+            samples[index].own.course_rad,
+        );
+        if turn.abs() > STEADY_TURN_RATE_RAD_S * step_s + 1e-9 {
+            turn
+        } else {
+            0.0
+        }
+    };
+    if count < 2 || end > samples.len() {
+        return count;
+    }
+    let turning_rad = turn_rad(end - 1);
+    if turning_rad == 0.0 {
+        return count;
+    }
+    let direction = turning_rad.signum();
+    if turn_of(latch, &samples[end - 1]) * direction <= 0.0 {
+        return count;
+    }
+    while end < samples.len()
+        && samples[end].time_s <= until_s + 1e-9
+        && turn_rad(end) * direction > 0.0
+    {
+        end += 1;
+    }
+    end - start
 }
 
 /// Whether a readily apparent alteration, once reached, was eased back

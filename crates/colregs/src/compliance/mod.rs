@@ -73,7 +73,9 @@
 //!   - [`ActionNotApparent`](ComplianceViolation::ActionNotApparent): up to
 //!     the closest approach (and, where the encounter ended before it, up to
 //!     `reaction_time_s` after it ended, as a turn begun in force shows over
-//!     ground), the largest course change is under
+//!     ground; and a turn under way at the closest approach to its end, up
+//!     to `reaction_time_s` after it: decision 51), the largest course
+//!     change is under
 //!     [`apparent_turn_rad`](RuleParameters::apparent_turn_rad) (30°) and the
 //!     largest speed reduction under `apparent_speed_reduction_fraction` of
 //!     the reference speed (one half).
@@ -122,8 +124,9 @@
 //!   (rules 2(a), 8(a), 17(c)) when risk arose just after a port turn toward
 //!   the target, on the port side of the course held before the turn (a
 //!   window before the latch, or before the turn then under way) and
-//!   forward of the beam of the new one, that made it a risk to be crossed
-//!   ahead of
+//!   forward of the beam of the new one, that made it a risk of collision
+//!   (whichever vessel would cross ahead; the target taken on the course it
+//!   held a window before, before any answer of its own: decision 51)
 //!   ([`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
 //!
 //! ## Scores (each in `[0, 1]`, 1 = best)

@@ -327,3 +327,61 @@ fn the_speed_taken_while_giving_way_to_another_is_the_speed_to_keep() {
     );
     assert!(alone.stand_on_departures[0].precedence.is_none());
 }
+
+/// Decision 51: ownship overtakes a vessel 2 km dead ahead, 0.5 m/s slower,
+/// and from 30 s alters 45° to starboard at 0.5°/s. The range opens 77 s
+/// after the latch, 23.6° round the turn; the alteration shown is the whole
+/// turn under way there (45°), readily apparent, not the part reached when
+/// the range began to open.
+#[test]
+fn a_turn_under_way_at_the_closest_approach_is_shown_to_its_end() {
+    let rules = RuleParameters::default();
+    let scoring = ScoringParameters::default();
+    let mut own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    let mut target = VesselState::new(DVec2::new(0.0, 2000.0), 0.0, 5.5, 50.0);
+    let mut samples = Vec::new();
+    for step in 0..=120 {
+        let time_s = f64::from(step) * 5.0;
+        if time_s > 30.0 {
+            own.course_rad = (own.course_rad + 2.5f64.to_radians()).min(45f64.to_radians());
+        }
+        samples.push(EncounterSample::new(time_s, own, target));
+        own = own.advanced(5.0);
+        target = target.advanced(5.0);
+    }
+    let latch = first_latch(&samples, &rules).expect("risk of collision");
+    assert_eq!(latch.encounter, Encounter::Overtaking);
+    let assessment = assess_encounter(&samples, &latch, &rules, &scoring);
+    assert!(
+        (70.0..=90.0).contains(&assessment.time_of_min_s),
+        "{}",
+        assessment.time_of_min_s
+    );
+    assert!(
+        !assessment
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::ActionNotApparent { .. })),
+        "{:?}",
+        assessment.violations
+    );
+    // Held on 23.6° instead (the turn stopped at the closest approach), the
+    // same alteration is not readily apparent.
+    let stopped: Vec<EncounterSample> = samples
+        .iter()
+        .map(|s| {
+            let mut s = *s;
+            s.own.course_rad = s.own.course_rad.min(22.5f64.to_radians());
+            s
+        })
+        .collect();
+    let assessment = assess_encounter(&stopped, &latch, &rules, &scoring);
+    assert!(
+        assessment
+            .violations
+            .iter()
+            .any(|v| matches!(v, ComplianceViolation::ActionNotApparent { .. })),
+        "{:?}",
+        assessment.violations
+    );
+}

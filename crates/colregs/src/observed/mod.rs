@@ -139,7 +139,8 @@
 //! - **Port turn toward a vessel**, whatever the role: where risk arose just
 //!   after ownship turned to port toward the target (on the port side of the
 //!   COG held a window before the latch, forward of the beam of the new one)
-//!   and the turn made it a risk of collision to be crossed ahead of,
+//!   and the turn made it a risk of collision (the target on the course it
+//!   held a window before: decision 51),
 //!   [`PortTurnTowardVessel`](crate::ComplianceViolation::PortTurnTowardVessel)
 //!   ([`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel)).
 //! - **Safety**, whatever the role: minimum distance (exact between

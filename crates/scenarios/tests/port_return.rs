@@ -1,0 +1,51 @@
+//! Issue 24, items 1-2 (decision 51): open-sea run 19 (2 targets, seed 11).
+//! Ownship, overtaking TS1 with 80° to starboard, came back 88° to port
+//! toward its goal onto TS2, crossing from port 5.2 nm off the bow: a
+//! collision course made by the return, ownship then standing on. With
+//! COLREGs-obeying targets TS2 gave way as risk arose and the evaluation
+//! found the turn (`port_turn_toward_vessel`); with constant targets the
+//! same track passed 830 m astern of TS2 and was none. The planner, which
+//! predicts TS2's steady motion, now judges the return as the evaluation
+//! does and holds the alteration longer, then returns astern of TS2.
+
+use vorrt_colregs::ComplianceViolation;
+use vorrt_scenarios::{OpenSeaSpec, TargetBehaviour, evaluate, simulate};
+
+/// The run's seed in the campaign (`rows.csv`).
+const RUN_19_SEED: u64 = 3_697_518_704_684_420_103;
+
+fn run_19(behaviour: TargetBehaviour) -> vorrt_scenarios::Evaluation {
+    let spec = OpenSeaSpec::with_targets(2).with_behaviour(behaviour);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 19).expect("generated");
+    let record = simulate(&scenario, RUN_19_SEED).expect("valid settings");
+    evaluate(&scenario, &record)
+}
+
+#[test]
+fn run_19_makes_no_port_return_onto_the_vessel_from_port() {
+    for behaviour in [TargetBehaviour::Constant, TargetBehaviour::Colregs] {
+        let evaluation = run_19(behaviour);
+        assert!(!evaluation.collision, "{behaviour:?}");
+        assert!(evaluation.clearance_kept, "{behaviour:?}");
+        assert!(evaluation.reached_goal, "{behaviour:?}");
+        for target in &evaluation.targets {
+            assert!(
+                !target
+                    .findings
+                    .iter()
+                    .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
+                "{behaviour:?} {}: {:?}",
+                target.name,
+                target.findings
+            );
+        }
+        // TS2 no longer passes within 1 nm as the stand-on vessel of a
+        // crossing the return made (830 m before, constant targets).
+        let ts2 = &evaluation.targets[1];
+        assert!(
+            ts2.min_distance_m > 1500.0,
+            "{behaviour:?}: {}",
+            ts2.min_distance_m
+        );
+    }
+}
