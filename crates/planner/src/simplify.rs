@@ -25,9 +25,7 @@
 //! starboard (or holding on) at service speed is valid, the same at reduced
 //! speed ([`SPEED_FACTORS`]: rules 8(e), 17(b); scenario-based MPC's speed
 //! factors),
-//! then the alterations to port. Where ownship only overtakes, the course
-//! held before a starboard alteration may be resumed, parallel to it, then
-//! the goal (decision 55). Where the leg to the goal would turn to
+//! then the alterations to port. Where the leg to the goal would turn to
 //! port onto a vessel crossing from port (decision 28), a course astern of
 //! it is tried before the next, longer hold. The branch is what is left
 //! when no such manoeuvre is valid, as among several vessels.
@@ -51,9 +49,7 @@ use vorrt_geometry::angle;
 use vorrt_jfs::{Leg, MotionModel, Pose};
 
 mod hold;
-use hold::{
-    Grade, HoldOutcome, RESUME_WITHIN_M, RETURN_BISECTIONS, hold_and_return, only_overtaking,
-};
+use hold::{Grade, HoldOutcome, RETURN_BISECTIONS, hold_and_return};
 
 /// When the next branch point cannot be reached by a valid leg, how many
 /// points beyond it are tried before the simplification gives up.
@@ -284,15 +280,6 @@ impl Alterations {
 /// shorter than the best found cannot win (the triangle inequality: longer
 /// holds only lengthen it), so it is not validated.
 ///
-/// Where a hold's return is refused and every encounter then in force is
-/// one in which ownship overtakes ([`only_overtaking`]), the course held
-/// before a starboard alteration at service speed is resumed from the
-/// first such hold, held until the goal can be made good, then the goal
-/// (`Alterations::Resume`): the overtaking vessel keeps out of the way on
-/// a parallel course once its passing distance is open (rule 13, decision
-/// 15) instead of holding the alteration until the other vessel is past.
-/// It competes by length with the alteration held (decision 55).
-///
 /// A reduced speed is held until it is reached (a speed change is readily
 /// apparent only once made: rule 8(b), half the speed) and until every
 /// encounter in which ownship gives way has passed (rule 8(d)), so ownship
@@ -335,40 +322,11 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
         };
         // The longest hold known to be valid whose return was refused.
         let mut refused_m: Option<f64> = None;
-        // The shortest hold of this alteration after which the course held
-        // before it can be resumed (decision 55), with the rest.
-        let mut resumed: Option<Vec<SimplifiedLeg>> = None;
-        let may_resume_course = alterations == Alterations::Mariners
-            && matches!(grade, Grade::Starboard | Grade::StarboardLarge)
-            && alteration_deg > 0.0;
         for hold_m in holds {
             match sail(hold_m) {
                 // Holding on is already invalid this far: longer holds are too.
                 HoldOutcome::Invalid => break,
-                HoldOutcome::Refused(hold) => {
-                    refused_m = Some(hold_m);
-                    // The goal cannot be made good yet from here; the course
-                    // held before the alteration, parallel to it, may be
-                    // (an overtaking vessel once its passing distance is
-                    // open, rule 13 and decision 15), then the goal.
-                    let may_resume = |hold: &SimplifiedLeg| {
-                        may_resume_course
-                            && resumed.is_none()
-                            && hold.leg.length_m() <= RESUME_WITHIN_M
-                            && only_overtaking(&hold.state)
-                    };
-                    if let Some(hold) = hold.filter(may_resume) {
-                        resumed = alter_hold_return(
-                            model,
-                            validator,
-                            &hold,
-                            speeds,
-                            goal_m,
-                            Alterations::Resume(alteration_deg),
-                        )
-                        .map(|rest| std::iter::once(hold).chain(rest).collect());
-                    }
-                }
+                HoldOutcome::Refused => refused_m = Some(hold_m),
                 // Another alteration than the first found wins only with a
                 // return begun once past and clear: judged on the course it
                 // settles on, a return begun earlier swings back before the
@@ -406,15 +364,6 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                     // The shortest valid hold of this alteration is found.
                     break;
                 }
-            }
-        }
-        if let Some(legs) = resumed {
-            let length_m = legs.iter().map(|leg| leg.leg.length_m()).sum::<f64>();
-            if best
-                .as_ref()
-                .is_none_or(|(_, best_m, _)| length_m < *best_m)
-            {
-                best = Some((grade, length_m, legs));
             }
         }
     }

@@ -2,9 +2,8 @@
 //! search prefers in order (decision 44).
 
 use super::{SimplifiedLeg, Speeds, reduction_held, return_to_goal};
-use crate::validity::{EncounterState, MotionValidator};
+use crate::validity::MotionValidator;
 use glam::DVec2;
-use vorrt_colregs::Encounter;
 use vorrt_jfs::{Leg, MotionModel};
 
 /// How many times [`alter_hold_return`](super::alter_hold_return) halves the gap between the longest
@@ -19,8 +18,8 @@ pub(super) enum HoldOutcome {
     /// The hold itself is refused (or cannot win): longer ones are too.
     Invalid,
     /// The hold is valid, but no return from its end is (or a reduced speed
-    /// is not yet held: then `None`); the hold, where its return was refused.
-    Refused(Option<SimplifiedLeg>),
+    /// is not yet held).
+    Refused,
     /// The hold and its return.
     Found(Vec<SimplifiedLeg>),
 }
@@ -44,7 +43,7 @@ pub(super) fn hold_and_return<M: MotionModel, V: MotionValidator>(
         return HoldOutcome::Invalid;
     }
     if factor < 1.0 && !reduction_held(&hold, &after_hold) {
-        return HoldOutcome::Refused(None);
+        return HoldOutcome::Refused;
     }
     let hold = SimplifiedLeg {
         end_elapsed_s: from.end_elapsed_s + hold.duration_s(),
@@ -53,7 +52,7 @@ pub(super) fn hold_and_return<M: MotionModel, V: MotionValidator>(
     };
     match return_to_goal(model, validator, &hold, speeds, goal_m) {
         Some(back) => HoldOutcome::Found(std::iter::once(hold).chain(back).collect()),
-        None => HoldOutcome::Refused(Some(hold)),
+        None => HoldOutcome::Refused,
     }
 }
 
@@ -99,22 +98,3 @@ impl Grade {
 /// shortest manoeuvre; larger ones are tried only where none of these is
 /// valid ([`Grade`]).
 pub(super) const MODERATE_DEG: f64 = 55.0;
-
-/// Whether every encounter in force in `state` is one in which ownship
-/// overtakes (rule 13), the one where the rules let it come back to a
-/// parallel course once its passing distance is open (decision 15): no
-/// stand-on duty (rule 17(a)(i): course and speed kept), no head-on or
-/// crossing alteration to hold until past (rule 8(d)).
-pub(super) fn only_overtaking(state: &EncounterState) -> bool {
-    state
-        .latches
-        .iter()
-        .flatten()
-        .all(|latch| latch.encounter == Encounter::Overtaking)
-}
-
-/// The longest hold of an alteration, metres, after which the course held
-/// before it is resumed (decision 55): 35° held 2 km opens 1.1 km, more
-/// than any passing distance asked; a longer hold is waiting for other
-/// vessels, not opening the passing distance.
-pub(super) const RESUME_WITHIN_M: f64 = 2000.0;
