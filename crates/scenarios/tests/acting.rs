@@ -141,6 +141,10 @@ fn sixteen_acting_vessels_of_run_511_are_kept_clear_of() {
 /// ownship planned 58 times, 50 of them between 655 s and 955 s. Holding
 /// its alteration while its return would bring risk back (decision 43),
 /// the target no longer swings, and ownship plans a handful of times.
+/// Since decision 51's stricter port-return check, full compliance is not
+/// found from 1815 s to 2055 s and the plan of the safety-only level is
+/// retried every 20 s (decision 17): 22 calls in all, 11 of them those
+/// retries; the swing's 58 stay far off.
 #[test]
 fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_step() {
     let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
@@ -148,7 +152,7 @@ fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_st
     let record = simulate(&scenario, 4_163_828_970_110_336_130).expect("valid settings");
     let evaluation = evaluate(&scenario, &record);
     assert!(
-        record.plans.len() <= 12,
+        record.plans.len() <= 24,
         "{} planner calls",
         record.plans.len()
     );
@@ -161,23 +165,32 @@ fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_st
 /// nothing asked again (the plan stayed valid), and the run ran out of time
 /// 22 km from its goal. Once the vessels are past and clear the closed
 /// loop asks for a plan that arrives sooner (`PlanTrigger::PastAndClear`,
-/// decision 52), and the goal is reached.
+/// decision 52). Since decision 51 the long hold no longer arises in this
+/// run (it reaches its goal without that trigger); run 64 is where the
+/// trigger now gives the sooner plan, at 955 s.
 #[test]
 fn once_past_and_clear_a_long_hold_is_cut_short() {
     let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
-    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 891).expect("generated");
-    let seed = scenario
-        .seed
-        .expect("a generated scenario carries its seed");
-    let record = simulate(&scenario, seed).expect("valid settings");
-    assert!(
-        record
-            .plans
-            .iter()
-            .any(|event| event.trigger == PlanTrigger::PastAndClear && event.succeeded),
-        "a sooner plan once every vessel was past and clear"
-    );
-    let evaluation = evaluate(&scenario, &record);
-    assert!(evaluation.reached_goal);
-    assert!(!evaluation.collision && evaluation.clearance_kept);
+    for index in [891, 64] {
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+        let seed = scenario
+            .seed
+            .expect("a generated scenario carries its seed");
+        let record = simulate(&scenario, seed).expect("valid settings");
+        let evaluation = evaluate(&scenario, &record);
+        assert!(evaluation.reached_goal, "run {index}");
+        assert!(
+            !evaluation.collision && evaluation.clearance_kept,
+            "run {index}"
+        );
+        if index == 64 {
+            assert!(
+                record
+                    .plans
+                    .iter()
+                    .any(|event| event.trigger == PlanTrigger::PastAndClear && event.succeeded),
+                "a sooner plan once every vessel was past and clear"
+            );
+        }
+    }
 }
