@@ -20,8 +20,8 @@ use vorrt::planner::{NearestIndex, Planner, PlannerConfig, PlanningProblem, Turn
 
 /// Plans once outside the measurement and says on stderr what the search
 /// did, so that a time can be read together with the work behind it.
-fn describe(id: &str, problem: &PlanningProblem, config: PlannerConfig) {
-    let mut planner = Planner::new(config).expect("valid configuration");
+fn describe(id: &str, problem: &PlanningProblem, config: &PlannerConfig) {
+    let mut planner = Planner::new(*config).expect("valid configuration");
     match planner.plan(problem, SEED) {
         Ok(plan) => eprintln!(
             "{id}: ok, {} waypoints, {} nodes, {} samples, {} restarts",
@@ -41,10 +41,10 @@ fn bench_plan(
     group_name: &str,
     id: &str,
     problem: &PlanningProblem,
-    config: PlannerConfig,
+    config: &PlannerConfig,
 ) {
     describe(&format!("{group_name}/{id}"), problem, config);
-    let mut planner = Planner::new(config).expect("valid configuration");
+    let mut planner = Planner::new(*config).expect("valid configuration");
     group.bench_function(id, |b| {
         b.iter(|| {
             let result = planner.plan(black_box(problem), black_box(SEED));
@@ -59,7 +59,7 @@ fn paper_scenarios(c: &mut Criterion) {
     group.measurement_time(Duration::from_secs(3));
     for name in ["crossing", "head_on", "overtaking", "multi_vessel", "tss"] {
         let (problem, config) = fixture_problem("paper", name);
-        bench_plan(&mut group, GROUP, name, &problem, config);
+        bench_plan(&mut group, GROUP, name, &problem, &config);
         // The paper's instantaneous turns: the tree's branch is the plan, no
         // simplification into legs and arcs. The difference to the id above
         // is the cost of the turn-rate-limited plan.
@@ -72,7 +72,7 @@ fn paper_scenarios(c: &mut Criterion) {
             GROUP,
             &format!("{name}_instant"),
             &problem,
-            instant,
+            &instant,
         );
     }
     group.finish();
@@ -90,7 +90,7 @@ fn target_scaling(c: &mut Criterion) {
     };
     for targets in [1usize, 2, 4, 8, 16, 32, 64] {
         let problem = generated_problem(targets, GENERATOR_SEED);
-        bench_plan(&mut group, GROUP, &targets.to_string(), &problem, config);
+        bench_plan(&mut group, GROUP, &targets.to_string(), &problem, &config);
     }
     group.finish();
 }
@@ -109,7 +109,7 @@ fn tree_scaling(c: &mut Criterion) {
             GROUP,
             &nodes.to_string(),
             &problem,
-            blocked_goal_config(nodes),
+            &blocked_goal_config(nodes),
         );
     }
     group.finish();
@@ -132,7 +132,7 @@ fn nearest_index(c: &mut Criterion) {
             nearest_index: index,
             ..tss_config
         };
-        bench_plan(&mut group, GROUP, &format!("tss/{name}"), &tss, config);
+        bench_plan(&mut group, GROUP, &format!("tss/{name}"), &tss, &config);
     }
     // A large tree: 3201 nodes grown toward a blocked goal.
     let blocked = blocked_goal_problem(GENERATOR_SEED);
@@ -146,7 +146,7 @@ fn nearest_index(c: &mut Criterion) {
             GROUP,
             &format!("blocked_1600/{name}"),
             &blocked,
-            config,
+            &config,
         );
     }
     group.finish();

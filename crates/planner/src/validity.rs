@@ -32,6 +32,9 @@ use vorrt_colregs::rules::{
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
 use vorrt_jfs::{Leg, LinearTrack};
 
+mod memo;
+pub(crate) use memo::{Along, LegMemo};
+
 /// The encounters in force at one point of a branch: per target, the latch
 /// (rules 13-17) and what ownship carries for it ([`alteration_made`]: for a
 /// give-way encounter the largest alteration of course from its reference
@@ -268,144 +271,6 @@ impl EncounterState {
                 own_then.course_rad,
                 acting_for_others,
             );
-        }
-    }
-}
-
-impl<C: Constraint> SafetyChecker<'_, C> {
-    /// The same checker without the memo of decision 54: each piece of a
-    /// leg judges every target's risk afresh. The same verdicts and the same
-    /// encounters, only slower: for comparing (`tests/leg_memo.rs`).
-    #[must_use]
-    pub fn without_leg_memo(mut self) -> Self {
-        self.leg_memo = false;
-        self
-    }
-
-    /// Whether a leg's check keeps the memo of decision 54
-    /// ([`without_leg_memo`](Self::without_leg_memo)).
-    #[must_use]
-    pub fn leg_memo(&self) -> bool {
-        self.leg_memo
-    }
-}
-
-/// What a leg's check carries from one piece to the next, per target
-/// ([`EncounterState::advance_reusing`]).
-#[derive(Debug, Default)]
-pub(crate) struct LegMemo {
-    /// Each target's velocity, reused while its course and speed stay the
-    /// same ([`velocity_of`]).
-    velocities: Vec<KnownVelocity>,
-    /// Ownship's velocity as a new encounter sees it (its steady course at
-    /// its speed) for which `clear` holds; `None` while ownship does not
-    /// sail at it.
-    seen_mps: Option<DVec2>,
-    /// Per target, the stretch of its track ([`LinearTrack::stretch_at`])
-    /// on which no risk can arise while ownship keeps `seen_mps`
-    /// ([`no_risk_while_steady`]), found on a piece with no encounter.
-    clear: Vec<Option<u8>>,
-}
-
-/// How near, m/s, the velocity sailed over a piece must be to the velocity
-/// seen ([`LegMemo::seen_mps`]) for the memo to be kept: the same course
-/// and speed, to rounding. Over an hour the two part by under 4 µm, far
-/// within [`STEADY_ROUNDING_M`](vorrt_colregs::risk::STEADY_ROUNDING_M).
-const SAILED_TOLERANCE_MPS: f64 = 1e-9;
-
-/// The memo of one leg's check at one piece: the targets' tracks, the
-/// elapsed time of the piece's end, and ownship's velocity over the piece
-/// when it sailed its settled course and speed.
-pub(crate) struct Along<'m> {
-    memo: &'m mut LegMemo,
-    tracks: &'m [LinearTrack],
-    elapsed_s: f64,
-    sailed_mps: Option<DVec2>,
-}
-
-impl Along<'_> {
-    /// Whether the memo holds at this piece for ownship's velocity as seen
-    /// (`seen_mps`): the piece was sailed at that velocity, and so was every
-    /// piece since the memo was last cleared (else it is cleared now).
-    /// `count`: the number of targets.
-    fn settle(&mut self, seen_mps: DVec2, count: usize) -> bool {
-        let memo = &mut *self.memo;
-        memo.velocities.resize(count, None);
-        let seen_mps = self
-            .sailed_mps
-            .filter(|sailed| sailed.distance(seen_mps) <= SAILED_TOLERANCE_MPS)
-            .map(|_| seen_mps);
-        if memo.seen_mps != seen_mps || memo.clear.len() != count {
-            memo.clear.clear();
-            memo.clear.resize(count, None);
-            memo.seen_mps = seen_mps;
-        }
-        seen_mps.is_some()
-    }
-
-    /// Whether no risk can arise with target `index` at this piece: found
-    /// so on an earlier piece, on the stretch of its track it is still on.
-    fn clear(&self, index: usize) -> bool {
-        self.memo
-            .clear
-            .get(index)
-            .copied()
-            .flatten()
-            .is_some_and(|stretch| self.tracks[index].stretch_at(self.elapsed_s) == Some(stretch))
-    }
-
-    /// `target`'s velocity ([`velocity_of`]).
-    fn velocity(&mut self, index: usize, target: &VesselState) -> DVec2 {
-        match self.memo.velocities.get_mut(index) {
-            Some(slot) => velocity_of(slot, target),
-            None => target.velocity_mps(),
-        }
-    }
-
-    /// Keeps target `index` as one no risk can reach, if so, after a piece
-    /// with no encounter with it: ownship at `own` (position and the
-    /// velocity seen), the target's state `target` and velocity
-    /// `target_mps`. Only where the target's
-    /// state moves as its track does on this stretch.
-    fn remember(
-        &mut self,
-        index: usize,
-        own: (DVec2, DVec2),
-        target: &VesselState,
-        target_mps: DVec2,
-        risk_distance_m: f64,
-    ) {
-        let track = &self.tracks[index];
-        let Some(stretch) = track.stretch_at(self.elapsed_s) else {
-            return;
-        };
-        if target_mps.distance(track.velocity_at(self.elapsed_s)) <= SAILED_TOLERANCE_MPS
-            && no_risk_while_steady(own.0, own.1, target.position_m, target_mps, risk_distance_m)
-            && let Some(slot) = self.memo.clear.get_mut(index)
-        {
-            *slot = Some(stretch);
-        }
-    }
-}
-
-/// A target's velocity ([`VesselState::velocity_mps`]) with the course and
-/// speed it was worked out for, radians, m/s, m/s; `None` before the first.
-pub(crate) type KnownVelocity = Option<(f64, f64, DVec2)>;
-
-/// `target`'s velocity: the one kept in `known` if worked out for the very
-/// same course and speed (the same bits), otherwise worked out and kept.
-fn velocity_of(known: &mut KnownVelocity, target: &VesselState) -> DVec2 {
-    match *known {
-        Some((course_rad, speed_mps, velocity_mps))
-            if course_rad.to_bits() == target.course_rad.to_bits()
-                && speed_mps.to_bits() == target.speed_mps.to_bits() =>
-        {
-            velocity_mps
-        }
-        _ => {
-            let velocity_mps = target.velocity_mps();
-            *known = Some((target.course_rad, target.speed_mps, velocity_mps));
-            velocity_mps
         }
     }
 }

@@ -262,11 +262,7 @@ impl Evaluation {
             if self.reached_goal { "yes" } else { "NO" },
             self.min_distance_m,
             self.clearance_m,
-            if self.clearance_kept {
-                "kept"
-            } else {
-                "BROKEN"
-            },
+            kept_or_broken(self.clearance_kept),
             if self.collision { "YES" } else { "no" },
             self.path_length_m,
             self.path_overhead_pct,
@@ -282,11 +278,7 @@ impl Evaluation {
             let _ = writeln!(
                 text,
                 "land: min distance {distance_m:.0} m (clearance {clearance_m:.0} m): {} | grounding: {}",
-                if self.land_clearance_kept {
-                    "kept"
-                } else {
-                    "BROKEN"
-                },
+                kept_or_broken(self.land_clearance_kept),
                 if self.grounding { "YES" } else { "no" },
             );
         }
@@ -331,6 +323,11 @@ impl Evaluation {
         }
         text
     }
+}
+
+/// "kept" or "BROKEN", as the table says of a clearance.
+fn kept_or_broken(kept: bool) -> &'static str {
+    if kept { "kept" } else { "BROKEN" }
 }
 
 /// The default of [`Evaluation::land_clearance_kept`] in results written

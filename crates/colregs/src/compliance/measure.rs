@@ -201,41 +201,7 @@ impl Measurements {
             .find(|turn| turn.abs() >= scoring.action_detection_rad);
         let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
         let before_cpa = &in_force[..before_cpa_count];
-        // The alteration made while in force, as it shows over ground: an
-        // observer sees a turn begun just before the encounter ended (say by
-        // opening the range) up to one reaction time (an observation window)
-        // later; never past the closest approach.
-        let shown_until_s = in_force
-            .last()
-            .map_or(f64::NEG_INFINITY, |s| s.time_s + scoring.reaction_time_s)
-            .min(time_of_min_s);
-        let shown = match window.start {
-            start if start < samples.len() && before_cpa_count == in_force.len() => {
-                let count = samples[start..].partition_point(|s| s.time_s <= shown_until_s + 1e-9);
-                &samples[start..start + count.max(before_cpa_count)]
-            }
-            _ => before_cpa,
-        };
-        // A turn under way where the showing ends (at the closest approach)
-        // is shown to its end, up to one reaction time later: an alteration
-        // begun at once at the rate of turn, for a vessel whose range opens
-        // part way round it (a vessel overtaken from close, its closest
-        // approach 60-100 s after the latch), is the whole alteration an
-        // observer sees made, not the part reached when the range began to
-        // open (decision 51).
-        let shown = match window.start {
-            start if start < samples.len() => {
-                let count = through_the_turn(
-                    samples,
-                    latch,
-                    start,
-                    shown.len(),
-                    time_of_min_s + scoring.reaction_time_s,
-                );
-                &samples[start..start + count]
-            }
-            _ => shown,
-        };
+        let shown = shown_samples(samples, window, in_force, latch, time_of_min_s, scoring);
         let courses: Vec<f64> = std::iter::once(latch.reference_course_rad)
             .chain(in_force.iter().map(|s| s.own.course_rad))
             .collect();
@@ -268,6 +234,56 @@ impl Measurements {
             crossed_ahead_distance_m: crossing_ahead_distance(samples, window, parameters, scoring),
             action_required: action_required(latch_sample, scoring),
         }
+    }
+}
+
+/// The samples that show the alteration made while in force, as it shows
+/// over ground (`Measurements::of`): from the latch to the closest
+/// approach, and through a turn still under way there.
+fn shown_samples<'s>(
+    samples: &'s [EncounterSample],
+    window: &InForce,
+    in_force: &'s [EncounterSample],
+    latch: &EncounterLatch,
+    time_of_min_s: f64,
+    scoring: &ScoringParameters,
+) -> &'s [EncounterSample] {
+    let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
+    let before_cpa = &in_force[..before_cpa_count];
+    // The alteration made while in force, as it shows over ground: an
+    // observer sees a turn begun just before the encounter ended (say by
+    // opening the range) up to one reaction time (an observation window)
+    // later; never past the closest approach.
+    let shown_until_s = in_force
+        .last()
+        .map_or(f64::NEG_INFINITY, |s| s.time_s + scoring.reaction_time_s)
+        .min(time_of_min_s);
+    let shown = match window.start {
+        start if start < samples.len() && before_cpa_count == in_force.len() => {
+            let count = samples[start..].partition_point(|s| s.time_s <= shown_until_s + 1e-9);
+            &samples[start..start + count.max(before_cpa_count)]
+        }
+        _ => before_cpa,
+    };
+    // A turn under way where the showing ends (at the closest approach)
+    // is shown to its end, up to one reaction time later: an alteration
+    // begun at once at the rate of turn, for a vessel whose range opens
+    // part way round it (a vessel overtaken from close, its closest
+    // approach 60-100 s after the latch), is the whole alteration an
+    // observer sees made, not the part reached when the range began to
+    // open (decision 51).
+    match window.start {
+        start if start < samples.len() => {
+            let count = through_the_turn(
+                samples,
+                latch,
+                start,
+                shown.len(),
+                time_of_min_s + scoring.reaction_time_s,
+            );
+            &samples[start..start + count]
+        }
+        _ => shown,
     }
 }
 

@@ -483,13 +483,7 @@ fn judge_target(
             })
             .flatten()
     });
-    let mut findings = Vec::new();
-    if !clearance_kept {
-        findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });
-    }
-    if collision {
-        findings.push(ComplianceViolation::Collision { min_distance_m });
-    }
+    let findings = clearance_findings(clearance_kept, collision, min_distance_m);
     ObservedEncounter {
         name: name.to_owned(),
         latch: None,
@@ -508,6 +502,23 @@ fn judge_target(
         status,
         undecided,
     }
+}
+
+/// The findings of a target judged on clearance alone: `d_th` broken
+/// between the hulls, and hull contact.
+fn clearance_findings(
+    clearance_kept: bool,
+    collision: bool,
+    min_distance_m: f64,
+) -> Vec<ComplianceViolation> {
+    let mut findings = Vec::new();
+    if !clearance_kept {
+        findings.push(ComplianceViolation::ClearanceViolated { min_distance_m });
+    }
+    if collision {
+        findings.push(ComplianceViolation::Collision { min_distance_m });
+    }
+    findings
 }
 
 /// Whether `distance_m` between ownship and the target keeps the clearance
