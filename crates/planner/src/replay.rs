@@ -37,6 +37,26 @@ pub(crate) struct FailedSearch {
 }
 
 impl FailedSearch {
+    /// Whether a search of `problem` with `config`, `seed` and `effort` is
+    /// this one at a compliance level at most as strict: the same problem,
+    /// seed, effort and every other setting.
+    fn same_search_at_weaker_level(
+        &self,
+        problem: &PlanningProblem,
+        config: &PlannerConfig,
+        seed: u64,
+        effort: SearchEffort,
+    ) -> bool {
+        PlannerConfig {
+            compliance: self.config.compliance,
+            ..*config
+        } == self.config
+            && seed == self.seed
+            && effort == self.effort
+            && weaker_or_equal(config.compliance, self.config.compliance)
+            && *problem == self.problem
+    }
+
     /// Whether a search of the same problem with `config`, `seed` and
     /// `effort` would repeat this one (see the module documentation).
     pub(crate) fn repeated_by(
@@ -46,24 +66,14 @@ impl FailedSearch {
         seed: u64,
         effort: SearchEffort,
     ) -> bool {
-        let same_but_compliance = PlannerConfig {
-            compliance: self.config.compliance,
-            ..*config
-        } == self.config;
-        same_but_compliance
-            && seed == self.seed
-            && effort == self.effort
-            && weaker_or_equal(config.compliance, self.config.compliance)
+        self.same_search_at_weaker_level(problem, config, seed, effort)
             && self
                 .refused
                 .by_cause()
                 .iter()
                 .all(|&(cause, count)| count == 0 || config.compliance.checks(cause))
-            && *problem == self.problem
     }
-}
 
-impl FailedSearch {
     /// Whether a search of the same problem with `config`, `seed` and
     /// `effort` asks the same moves in the same order as this one for as
     /// long as their verdicts agree, so that [`Verdicts`] may replay this
@@ -77,15 +87,8 @@ impl FailedSearch {
         seed: u64,
         effort: SearchEffort,
     ) -> bool {
-        PlannerConfig {
-            compliance: self.config.compliance,
-            ..*config
-        } == self.config
-            && config.time_budget_s.is_none()
-            && seed == self.seed
-            && effort == self.effort
-            && weaker_or_equal(config.compliance, self.config.compliance)
-            && *problem == self.problem
+        config.time_budget_s.is_none()
+            && self.same_search_at_weaker_level(problem, config, seed, effort)
     }
 }
 

@@ -201,7 +201,14 @@ impl Measurements {
             .find(|turn| turn.abs() >= scoring.action_detection_rad);
         let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
         let before_cpa = &in_force[..before_cpa_count];
-        let shown = shown_samples(samples, window, in_force, latch, time_of_min_s, scoring);
+        let shown = shown_samples(
+            samples,
+            window,
+            (in_force, before_cpa),
+            latch,
+            time_of_min_s,
+            scoring,
+        );
         let courses: Vec<f64> = std::iter::once(latch.reference_course_rad)
             .chain(in_force.iter().map(|s| s.own.course_rad))
             .collect();
@@ -239,17 +246,17 @@ impl Measurements {
 
 /// The samples that show the alteration made while in force, as it shows
 /// over ground (`Measurements::of`): from the latch to the closest
-/// approach, and through a turn still under way there.
+/// approach (`before_cpa`, the in-force samples up to it), and through a
+/// turn still under way there.
 fn shown_samples<'s>(
     samples: &'s [EncounterSample],
     window: &InForce,
-    in_force: &'s [EncounterSample],
+    (in_force, before_cpa): (&'s [EncounterSample], &'s [EncounterSample]),
     latch: &EncounterLatch,
     time_of_min_s: f64,
     scoring: &ScoringParameters,
 ) -> &'s [EncounterSample] {
-    let before_cpa_count = in_force.partition_point(|s| s.time_s <= time_of_min_s + 1e-9);
-    let before_cpa = &in_force[..before_cpa_count];
+    let before_cpa_count = before_cpa.len();
     // The alteration made while in force, as it shows over ground: an
     // observer sees a turn begun just before the encounter ended (say by
     // opening the range) up to one reaction time (an observation window)
