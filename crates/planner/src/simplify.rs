@@ -419,20 +419,43 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
     }
     let pose = hold.leg.end_pose();
     let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
-    for offset_deg in ASTERN_DEG {
-        let course_rad = angle::normalize_2pi(goal_course_rad - offset_deg.to_radians());
-        for hold_m in ASTERN_HOLD_M {
-            let astern = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
-            let Ok(astern) = sail(hold, astern) else {
+    let astern = ASTERN_DEG.map(|deg| (-deg, ASTERN_HOLD_M));
+    let short_of = SHORT_OF_DEG.map(|deg| (deg, SHORT_OF_HOLD_M));
+    for (offset_deg, holds_m) in astern.into_iter().chain(short_of) {
+        let course_rad = angle::normalize_2pi(goal_course_rad + offset_deg.to_radians());
+        if offset_deg > 0.0
+            && angle::normalize_pi(course_rad - pose.course_rad) >= -SHORT_OF_DEG[0].to_radians()
+        {
+            // Not a port turn toward the goal of at least the smallest
+            // offset: nothing short of the goal's bearing to try.
+            continue;
+        }
+        for hold_m in holds_m {
+            let part = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
+            let Ok(part) = sail(hold, part) else {
                 continue;
             };
-            if let Some(back) = to_goal(&astern).and_then(|leg| sail(&astern, leg).ok()) {
-                return Some(vec![astern, back]);
+            if let Some(back) = to_goal(&part).and_then(|leg| sail(&part, leg).ok()) {
+                return Some(vec![part, back]);
             }
         }
     }
     None
 }
+
+/// The courses to starboard of the goal's bearing that a return refused
+/// for turning to port onto a vessel tries where no course astern of it
+/// ([`ASTERN_DEG`]) is valid, degrees: part of the way back, a port turn
+/// smaller than the one refused that makes no vessel a risk, held while the
+/// other vessel crosses ahead (decision 61).
+const SHORT_OF_DEG: [f64; 2] = [15.0, 25.0];
+
+/// How far a course short of the goal's bearing ([`SHORT_OF_DEG`]) is held
+/// before the leg to the goal, metres, shortest first: 2 km (about 5
+/// minutes at 13 kn) or more, so that an observer judging the course over
+/// ground sees two port turns and not one (decision 55's run 116: a course
+/// held 819 m between two port turns was seen as one of 56°).
+const SHORT_OF_HOLD_M: [f64; 3] = [2000.0, 4000.0, 6000.0];
 
 /// The manoeuvres of two alterations, tried where one alteration held
 /// cannot be sailed: from `start` with `state` in force, a first course
