@@ -421,6 +421,10 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
     let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
     let astern = ASTERN_DEG.map(|deg| (-deg, ASTERN_HOLD_M));
     let short_of = SHORT_OF_DEG.map(|deg| (deg, SHORT_OF_HOLD_M));
+    // Part of the way back only once every vessel given way to is past and
+    // clear: a smaller turn while one is in force is a small alteration in
+    // its encounter (rule 8(b)).
+    let short_of = short_of.into_iter().filter(|_| past_and_clear(&hold.state));
     for (offset_deg, holds_m) in astern.into_iter().chain(short_of) {
         let course_rad = angle::normalize_2pi(goal_course_rad + offset_deg.to_radians());
         if offset_deg > 0.0
