@@ -1,0 +1,162 @@
+//! The verdicts of one manoeuvre search from the root, shared between the
+//! two clearances of the ladder (decision 59).
+//!
+//! The search from the root asks each manoeuvre shape at the preferred
+//! clearance and at `d_th` ([`ROOT_LADDER`](super::ROOT_LADDER)); the two
+//! searches ask many of the same legs from the same encounters. The
+//! validity check is a pure function of the leg, its start time and the
+//! encounters in force for one planner call, and its clearance enters only
+//! in tests of the form "a distance under the clearance refuses"
+//! (`SafetyChecker::check`, `check_clearance`): every other test, and the
+//! encounters carried to the leg's end, do not depend on it. Hence:
+//!
+//! - a leg accepted at a clearance is accepted at any narrower one, with
+//!   the same encounters at its end (the premise of the ladder's
+//!   [`Probe`](super::Probe));
+//! - a leg refused at a clearance for a cause `X` is refused at any wider
+//!   one, for `X` or for a clearance cause met on the way
+//!   ([`RejectionCause::Clearance`], [`RejectionCause::ClearanceAhead`]);
+//! - the same leg asked again at the same clearance gets the same verdict.
+//!
+//! [`AcrossClearances`] gives a remembered verdict where these make it
+//! certain. The verdict's cause is exact except for a refusal carried to a
+//! wider clearance, which is given only where the search has already found
+//! a plan whatever this one finds (the ladder's `d_th` rung found one and the
+//! preferred is asked to widen it: its refusals are then not kept) and only
+//! where the cause is not the one the manoeuvre search branches on
+//! ([`ManeuverViolation::PortTurnTowardVessel`]: the return astern of a
+//! vessel, `simplify::return_to_goal`), which a clearance cause is not
+//! either. The plans are the same bit for bit; only the work differs.
+
+use crate::plan::RejectionCause;
+use crate::validity::{EncounterState, MotionValidator};
+use std::cell::RefCell;
+use std::collections::HashMap;
+use vorrt_colregs::ManeuverViolation;
+use vorrt_jfs::Leg;
+
+/// What one leg, from one start time and encounters, came to.
+#[derive(Debug, Default)]
+struct Known {
+    /// The widest clearance it was accepted at, metres, and the encounters
+    /// at its end.
+    accepted: Option<(f64, EncounterState)>,
+    /// The narrowest clearance it was refused at, metres, and the cause.
+    refused: Option<(f64, RejectionCause)>,
+}
+
+/// The verdicts of one search from the root, by leg, start time and
+/// encounters in force (module documentation).
+#[derive(Debug, Default)]
+pub(crate) struct ClearanceMemo {
+    known: RefCell<HashMap<Vec<u64>, Known>>,
+}
+
+/// The bits of everything a verdict depends on in one search: the leg, its
+/// start time and the encounters in force (exact: `-0.0` is not `0.0`).
+fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
+    let mut key = Vec::with_capacity(12 + 7 * state.latches.len() + state.alterations.len());
+    key.extend(
+        [
+            leg.start_m.x,
+            leg.start_m.y,
+            leg.start_course_rad,
+            leg.course_rad,
+            leg.turn_rad,
+            leg.turn_radius_m,
+            leg.straight_m,
+            leg.speed_mps,
+            start_elapsed_s,
+        ]
+        .map(f64::to_bits),
+    );
+    match leg.speed_change {
+        Some(change) => key.extend([
+            1,
+            change.start_speed_mps.to_bits(),
+            change.rate_mps2.to_bits(),
+        ]),
+        None => key.push(0),
+    }
+    for latch in &state.latches {
+        match latch {
+            Some(latch) => key.extend([
+                1 + latch.encounter as u64,
+                latch.reference_course_rad.to_bits(),
+                latch.reference_speed_mps.to_bits(),
+                latch.latched_at_s.to_bits(),
+                latch.risk_distance_m.map_or(u64::MAX, f64::to_bits),
+                u64::from(latch.risk_distance_m.is_some()),
+            ]),
+            None => key.push(0),
+        }
+    }
+    key.extend(state.alterations.iter().map(|altered| altered.to_bits()));
+    key
+}
+
+/// The validator of one rung of the search from the root at `clearance_m`,
+/// giving the verdicts `memo` makes certain and remembering the others
+/// (module documentation).
+pub(crate) struct AcrossClearances<'a, V> {
+    pub(crate) validator: &'a V,
+    pub(crate) memo: &'a ClearanceMemo,
+    /// The clearance `validator` judges at, metres.
+    pub(crate) clearance_m: f64,
+    /// Whether a refusal at a narrower clearance may be given (the search
+    /// has found a plan whatever this one finds, and no earlier search's
+    /// verdicts are being replayed).
+    pub(crate) widening: bool,
+}
+
+impl<V: MotionValidator> MotionValidator for AcrossClearances<'_, V> {
+    fn validate(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let key = key_of(leg, start_elapsed_s, state);
+        if let Some(known) = self.memo.known.borrow().get(&key) {
+            if let Some((accepted_m, after)) = &known.accepted
+                && *accepted_m >= self.clearance_m
+            {
+                state.clone_from(after);
+                return Ok(());
+            }
+            if let Some((refused_m, cause)) = known.refused {
+                let same = refused_m.to_bits() == self.clearance_m.to_bits();
+                let widened = self.widening
+                    && refused_m <= self.clearance_m
+                    && cause
+                        != RejectionCause::Colregs(ManeuverViolation::PortTurnTowardVessel);
+                if same || widened {
+                    return Err(cause);
+                }
+            }
+        }
+        let verdict = self.validator.validate(leg, start_elapsed_s, state);
+        let mut known = self.memo.known.borrow_mut();
+        let entry = known.entry(key).or_default();
+        match verdict {
+            Ok(()) => {
+                if entry
+                    .accepted
+                    .as_ref()
+                    .is_none_or(|(accepted_m, _)| self.clearance_m > *accepted_m)
+                {
+                    entry.accepted = Some((self.clearance_m, state.clone()));
+                }
+            }
+            Err(cause) => {
+                if entry
+                    .refused
+                    .is_none_or(|(refused_m, _)| self.clearance_m < refused_m)
+                {
+                    entry.refused = Some((self.clearance_m, cause));
+                }
+            }
+        }
+        verdict
+    }
+}
