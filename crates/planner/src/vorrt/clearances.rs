@@ -18,6 +18,13 @@
 //!   ([`RejectionCause::Clearance`], [`RejectionCause::ClearanceAhead`]);
 //! - the same leg asked again at the same clearance gets the same verdict.
 //!
+//! The same holds of a refusal on a chord of a leg's turn for every leg with
+//! the same start, turn, speeds, start time and encounters, whatever its
+//! straight run (`SafetyChecker::validate_pieces`): the holds of one
+//! alteration, and the courses astern of a vessel held 1, 2 or 4 km
+//! (`simplify::return_to_goal`), are such legs, and a port turn is often
+//! refused on its chords (decision 51).
+//!
 //! [`AcrossClearances`] gives a remembered verdict where these make it
 //! certain. The verdict's cause is exact except for a refusal carried to a
 //! wider clearance, which is given only where the search has already found
@@ -29,6 +36,8 @@
 //! either. The plans are the same bit for bit; only the work differs.
 
 use crate::plan::RejectionCause;
+use crate::constraint::Constraint;
+use crate::safety::SafetyChecker;
 use crate::validity::{EncounterState, MotionValidator};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -46,10 +55,32 @@ struct Known {
 }
 
 /// The verdicts of one search from the root, by leg, start time and
-/// encounters in force (module documentation).
+/// encounters in force, and the refusals on a turn's chords by the same
+/// less the straight run (module documentation).
 #[derive(Debug, Default)]
 pub(crate) struct ClearanceMemo {
     known: RefCell<HashMap<Vec<u64>, Known>>,
+    /// The narrowest clearance a turn was refused at on a chord, metres,
+    /// and the cause.
+    turns: RefCell<HashMap<Vec<u64>, (f64, RejectionCause)>>,
+}
+
+/// The shortest straight run, metres, of a leg whose refusal on a chord is
+/// shared: every piece of a longer run ends clear of the turn
+/// (`Leg::pieces` counts a piece ending within `SAME_POINT_M` of the arc
+/// as a chord).
+const SHARED_TURN_MIN_STRAIGHT_M: f64 = 1.0;
+
+/// The key of `leg`'s turn (the leg less its straight run) from
+/// `start_elapsed_s` with `state`, where its chords' verdicts are shared.
+fn turn_key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Option<Vec<u64>> {
+    (leg.turn_rad != 0.0 && leg.straight_m >= SHARED_TURN_MIN_STRAIGHT_M).then(|| {
+        let turn = Leg {
+            straight_m: 0.0,
+            ..*leg
+        };
+        key_of(&turn, start_elapsed_s, state)
+    })
 }
 
 /// The bits of everything a verdict depends on in one search: the leg, its
@@ -98,8 +129,8 @@ fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
 /// The validator of one rung of the search from the root at `clearance_m`,
 /// giving the verdicts `memo` makes certain and remembering the others
 /// (module documentation).
-pub(crate) struct AcrossClearances<'a, V> {
-    pub(crate) validator: &'a V,
+pub(crate) struct AcrossClearances<'a, 'c, C> {
+    pub(crate) validator: &'a SafetyChecker<'c, C>,
     pub(crate) memo: &'a ClearanceMemo,
     /// The clearance `validator` judges at, metres.
     pub(crate) clearance_m: f64,
@@ -109,7 +140,18 @@ pub(crate) struct AcrossClearances<'a, V> {
     pub(crate) widening: bool,
 }
 
-impl<V: MotionValidator> MotionValidator for AcrossClearances<'_, V> {
+impl<C> AcrossClearances<'_, '_, C> {
+    /// Whether a refusal for `cause` at `refused_m` is this validator's:
+    /// at the same clearance, or carried wider where that may be given.
+    fn refuses(&self, refused_m: f64, cause: RejectionCause) -> bool {
+        refused_m.to_bits() == self.clearance_m.to_bits()
+            || (self.widening
+                && refused_m <= self.clearance_m
+                && cause != RejectionCause::Colregs(ManeuverViolation::PortTurnTowardVessel))
+    }
+}
+
+impl<C: Constraint> MotionValidator for AcrossClearances<'_, '_, C> {
     fn validate(
         &self,
         leg: &Leg,
@@ -124,18 +166,31 @@ impl<V: MotionValidator> MotionValidator for AcrossClearances<'_, V> {
                 state.clone_from(after);
                 return Ok(());
             }
-            if let Some((refused_m, cause)) = known.refused {
-                let same = refused_m.to_bits() == self.clearance_m.to_bits();
-                let widened = self.widening
-                    && refused_m <= self.clearance_m
-                    && cause
-                        != RejectionCause::Colregs(ManeuverViolation::PortTurnTowardVessel);
-                if same || widened {
-                    return Err(cause);
-                }
+            if let Some((refused_m, cause)) = known.refused
+                && self.refuses(refused_m, cause)
+            {
+                return Err(cause);
             }
         }
-        let verdict = self.validator.validate(leg, start_elapsed_s, state);
+        let turn_key = turn_key_of(leg, start_elapsed_s, state)
+            .filter(|_| self.validator.turn_verdicts_shared());
+        if let Some(turn_key) = &turn_key
+            && let Some(&(refused_m, cause)) = self.memo.turns.borrow().get(turn_key)
+            && self.refuses(refused_m, cause)
+        {
+            return Err(cause);
+        }
+        let mut on_turn = false;
+        let verdict = self
+            .validator
+            .validate_pieces(leg, start_elapsed_s, state, &mut on_turn);
+        if let (Err(cause), true, Some(turn_key)) = (verdict, on_turn, turn_key) {
+            let mut turns = self.memo.turns.borrow_mut();
+            let entry = turns.entry(turn_key).or_insert((self.clearance_m, cause));
+            if self.clearance_m < entry.0 {
+                *entry = (self.clearance_m, cause);
+            }
+        }
         let mut known = self.memo.known.borrow_mut();
         let entry = known.entry(key).or_default();
         match verdict {
