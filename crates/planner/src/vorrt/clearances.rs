@@ -39,7 +39,7 @@ use crate::plan::RejectionCause;
 use crate::constraint::Constraint;
 use crate::safety::SafetyChecker;
 use crate::validity::{EncounterState, MotionValidator};
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use vorrt_colregs::ManeuverViolation;
 use vorrt_jfs::Leg;
@@ -63,6 +63,16 @@ pub(crate) struct ClearanceMemo {
     /// The narrowest clearance a turn was refused at on a chord, metres,
     /// and the cause.
     turns: RefCell<HashMap<Vec<u64>, (f64, RejectionCause)>>,
+    /// How many legs were passed on to be judged.
+    judged: Cell<u64>,
+}
+
+impl ClearanceMemo {
+    /// How many legs were passed on to be judged (the others were given a
+    /// remembered verdict).
+    pub(crate) fn judged(&self) -> u64 {
+        self.judged.get()
+    }
 }
 
 /// The shortest straight run, metres, of a leg whose refusal on a chord is
@@ -181,6 +191,7 @@ impl<C: Constraint> MotionValidator for AcrossClearances<'_, '_, C> {
             return Err(cause);
         }
         let mut on_turn = false;
+        self.memo.judged.set(self.memo.judged.get() + 1);
         let verdict = self
             .validator
             .validate_pieces(leg, start_elapsed_s, state, &mut on_turn);
@@ -213,5 +224,149 @@ impl<C: Constraint> MotionValidator for AcrossClearances<'_, '_, C> {
             }
         }
         verdict
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::PlannerConfig;
+    use glam::DVec2;
+    use vorrt_colregs::VesselState;
+    use vorrt_jfs::{MotionModel, Pose, RateLimitedTurn, TargetState};
+
+    /// A target lying still at `at_m`, 50 m long.
+    fn still_at(at_m: DVec2) -> Vec<vorrt_jfs::LinearTrack> {
+        vec![TargetState::constant_velocity(VesselState::new(at_m, 0.0, 0.0, 50.0)).track()]
+    }
+
+    fn no_encounter() -> EncounterState {
+        EncounterState {
+            latches: vec![None],
+            alterations: vec![0.0],
+        }
+    }
+
+    /// The checkers at `d_th` and at the preferred clearance.
+    fn configs() -> (PlannerConfig, PlannerConfig) {
+        let floor = PlannerConfig::default();
+        let preferred = PlannerConfig {
+            clearance_m: floor.clearance_m * floor.preferred_clearance_factor,
+            ..floor
+        };
+        (floor, preferred)
+    }
+
+    #[test]
+    fn a_leg_accepted_wider_is_accepted_at_d_th_with_the_same_encounters_unjudged() {
+        let (floor, preferred) = configs();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = DVec2::new(0.0, 5000.0);
+        // Beyond MTD of the leg throughout.
+        let tracks = still_at(DVec2::new(9000.0, 2500.0));
+        let wide = SafetyChecker::new(&preferred, &tracks, own, goal_m, 0.0);
+        let narrow = SafetyChecker::new(&floor, &tracks, own, goal_m, 0.0);
+        let memo = ClearanceMemo::default();
+        let leg = Leg::straight(DVec2::ZERO, 0.0, 5000.0, 6.0);
+        let across = |checker, clearance_m| AcrossClearances {
+            validator: checker,
+            memo: &memo,
+            clearance_m,
+            widening: false,
+        };
+        let mut state = no_encounter();
+        assert_eq!(
+            across(&wide, preferred.clearance_m).validate(&leg, 0.0, &mut state),
+            Ok(())
+        );
+        assert_eq!(memo.judged(), 1);
+        let mut remembered = no_encounter();
+        assert_eq!(
+            across(&narrow, floor.clearance_m).validate(&leg, 0.0, &mut remembered),
+            Ok(())
+        );
+        // Not judged again, and the encounters are those the check gives.
+        assert_eq!(memo.judged(), 1);
+        let mut judged = no_encounter();
+        assert_eq!(narrow.validate(&leg, 0.0, &mut judged), Ok(()));
+        assert_eq!(remembered, judged);
+    }
+
+    #[test]
+    fn a_refusal_at_d_th_is_carried_wider_only_once_a_plan_is_found() {
+        let (floor, preferred) = configs();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = DVec2::new(0.0, 5000.0);
+        // 150 m off the leg: inside d_th.
+        let tracks = still_at(DVec2::new(150.0, 1000.0));
+        let wide = SafetyChecker::new(&preferred, &tracks, own, goal_m, 0.0);
+        let narrow = SafetyChecker::new(&floor, &tracks, own, goal_m, 0.0);
+        let memo = ClearanceMemo::default();
+        let leg = Leg::straight(DVec2::ZERO, 0.0, 2000.0, 6.0);
+        let refused = narrow.validate(&leg, 0.0, &mut no_encounter());
+        assert!(refused.is_err());
+        let at_floor = AcrossClearances {
+            validator: &narrow,
+            memo: &memo,
+            clearance_m: floor.clearance_m,
+            widening: false,
+        };
+        assert_eq!(at_floor.validate(&leg, 0.0, &mut no_encounter()), refused);
+        // The same leg at the same clearance: the same verdict, not judged.
+        assert_eq!(at_floor.validate(&leg, 0.0, &mut no_encounter()), refused);
+        assert_eq!(memo.judged(), 1);
+        let wider = |widening| AcrossClearances {
+            validator: &wide,
+            memo: &memo,
+            clearance_m: preferred.clearance_m,
+            widening,
+        };
+        // Wider before a plan is found: judged (the cause is kept exact).
+        assert_eq!(wider(false).validate(&leg, 0.0, &mut no_encounter()), refused);
+        assert_eq!(memo.judged(), 2);
+        let other = Leg::straight(DVec2::ZERO, 0.0, 2500.0, 6.0);
+        assert!(at_floor.validate(&other, 0.0, &mut no_encounter()).is_err());
+        assert_eq!(memo.judged(), 3);
+        // Once a plan is found, carried wider without being judged.
+        assert!(wider(true).validate(&other, 0.0, &mut no_encounter()).is_err());
+        assert_eq!(memo.judged(), 3);
+    }
+
+    #[test]
+    fn a_refusal_on_a_turn_is_shared_by_every_straight_run_after_it() {
+        let (floor, _) = configs();
+        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+        let goal_m = DVec2::new(3000.0, 300.0);
+        // Inside the 90° turn to starboard of radius 300 m (its centre at
+        // (300, 0)): 88 m off the arc.
+        let tracks = still_at(DVec2::new(150.0, 150.0));
+        let checker = SafetyChecker::new(&floor, &tracks, own, goal_m, 0.0);
+        let model = RateLimitedTurn {
+            turn_radius_m: 300.0,
+        };
+        let start = Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 0.0,
+        };
+        let east = std::f64::consts::FRAC_PI_2;
+        let (short, long) = (
+            model.turn_onto(start, east, 6.0, 1000.0),
+            model.turn_onto(start, east, 6.0, 2000.0),
+        );
+        let mut on_turn = false;
+        let refused = checker.validate_pieces(&short, 0.0, &mut no_encounter(), &mut on_turn);
+        assert_eq!(refused, Err(RejectionCause::Clearance));
+        assert!(on_turn);
+        let memo = ClearanceMemo::default();
+        let across = AcrossClearances {
+            validator: &checker,
+            memo: &memo,
+            clearance_m: floor.clearance_m,
+            widening: false,
+        };
+        assert_eq!(across.validate(&short, 0.0, &mut no_encounter()), refused);
+        assert_eq!(across.validate(&long, 0.0, &mut no_encounter()), refused);
+        assert_eq!(memo.judged(), 1);
+        assert_eq!(checker.validate(&long, 0.0, &mut no_encounter()), refused);
     }
 }
