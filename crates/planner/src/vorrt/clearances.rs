@@ -35,8 +35,8 @@
 //! vessel, `simplify::return_to_goal`), which a clearance cause is not
 //! either. The plans are the same bit for bit; only the work differs.
 
-use crate::plan::RejectionCause;
 use crate::constraint::Constraint;
+use crate::plan::RejectionCause;
 use crate::safety::SafetyChecker;
 use crate::validity::{EncounterState, MotionValidator};
 use std::cell::{Cell, RefCell};
@@ -322,13 +322,20 @@ mod tests {
             widening,
         };
         // Wider before a plan is found: judged (the cause is kept exact).
-        assert_eq!(wider(false).validate(&leg, 0.0, &mut no_encounter()), refused);
+        assert_eq!(
+            wider(false).validate(&leg, 0.0, &mut no_encounter()),
+            refused
+        );
         assert_eq!(memo.judged(), 2);
         let other = Leg::straight(DVec2::ZERO, 0.0, 2500.0, 6.0);
         assert!(at_floor.validate(&other, 0.0, &mut no_encounter()).is_err());
         assert_eq!(memo.judged(), 3);
         // Once a plan is found, carried wider without being judged.
-        assert!(wider(true).validate(&other, 0.0, &mut no_encounter()).is_err());
+        assert!(
+            wider(true)
+                .validate(&other, 0.0, &mut no_encounter())
+                .is_err()
+        );
         assert_eq!(memo.judged(), 3);
     }
 

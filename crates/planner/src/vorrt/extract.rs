@@ -156,8 +156,9 @@ fn climb<T>(
             return ask(ClearanceLevel::Floor, false);
         }
         match probe {
-            Probe::PreferredFirst => ask(ClearanceLevel::Preferred, false)
-                .or_else(|| ask(ClearanceLevel::Floor, false)),
+            Probe::PreferredFirst => {
+                ask(ClearanceLevel::Preferred, false).or_else(|| ask(ClearanceLevel::Floor, false))
+            }
             Probe::FloorFirst => ask(ClearanceLevel::Floor, false)
                 .map(|floor| ask(ClearanceLevel::Preferred, true).unwrap_or(floor)),
         }
