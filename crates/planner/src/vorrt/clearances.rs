@@ -70,6 +70,7 @@ pub(crate) struct ClearanceMemo {
 impl ClearanceMemo {
     /// How many legs were passed on to be judged (the others were given a
     /// remembered verdict).
+    #[cfg(test)]
     pub(crate) fn judged(&self) -> u64 {
         self.judged.get()
     }
