@@ -355,6 +355,31 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
+        self.validate_pieces(leg, start_elapsed_s, state, &mut false)
+    }
+}
+
+impl<C: Constraint> SafetyChecker<'_, C> {
+    /// Whether the verdicts of [`validate_pieces`](Self::validate_pieces)
+    /// on a chord of a leg's turn are those of every leg with the same turn
+    /// whatever its straight run: the targets within reach are not worked
+    /// out per leg ([`worth_pruning`] is false for every leg).
+    pub(crate) fn turn_verdicts_shared(&self) -> bool {
+        self.tracks().len() < PRUNE_TARGETS
+    }
+
+    /// [`MotionValidator::validate`], saying in `on_turn` whether the piece
+    /// judged last (the one refused, on an error) is a chord of the leg's
+    /// turn: the chords, and everything judged on them, depend on the
+    /// leg's start, turn, speeds and start time, and not on its straight
+    /// run (where [`turn_verdicts_shared`](Self::turn_verdicts_shared)).
+    pub(crate) fn validate_pieces(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+        on_turn: &mut bool,
+    ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
         // once: the others can change no verdict (decision 33).
         let in_reach = worth_pruning(self, leg)
@@ -382,6 +407,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         // velocities hold (decision 54).
         let mut memo = LegMemo::default();
         for piece in leg.pieces(self.config().step_m) {
+            *on_turn = piece.turning;
             let candidate = Move {
                 start_m: piece.start_m,
                 start_elapsed_s: start_elapsed_s + piece.elapsed_s,

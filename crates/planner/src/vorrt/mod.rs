@@ -33,6 +33,7 @@ use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
 use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, TargetState};
 
+mod clearances;
 mod extract;
 
 /// How often (in samples) the wall clock is read when a budget is set.
