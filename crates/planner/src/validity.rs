@@ -416,7 +416,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 // course over ground part way round), and a vessel that
                 // acts answers it (decision 51).
                 if piece.turning {
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
                 }
             } else {
                 if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
@@ -427,7 +427,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                     // within MTD part way through the window's last piece
                     // is latched there by the evaluation, and is seen at the
                     // next piece's start (decision 51).
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
