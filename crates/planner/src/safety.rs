@@ -26,6 +26,7 @@
 use crate::config::{Compliance, PlannerConfig};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
+use crate::validity::LegMemo;
 use glam::DVec2;
 use vorrt_colregs::rules::{
     PortTurnGate, acting_for_any, course_change_rad, is_port_turn,
@@ -36,12 +37,11 @@ use vorrt_colregs::{
     check_alteration, check_heading, check_motion,
 };
 use vorrt_geometry::VelocityObstacle;
-use crate::validity::LegMemo;
 use vorrt_jfs::LinearTrack;
 
 mod distance;
-pub use distance::min_distance_over;
 use distance::beyond_reach;
+pub use distance::min_distance_over;
 
 /// One candidate move out of a parent node.
 #[derive(Debug, Clone, Copy)]
