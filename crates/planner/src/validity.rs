@@ -442,7 +442,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 // course over ground part way round), and a vessel that
                 // acts answers it (decision 51).
                 if piece.turning {
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
                 }
             } else {
                 if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
@@ -453,7 +453,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                     // within MTD part way through the window's last piece
                     // is latched there by the evaluation, and is seen at the
                     // next piece's start (decision 51).
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
@@ -556,6 +556,58 @@ mod tests {
     use super::*;
     use crate::PlannerConfig;
     use vorrt_jfs::TargetState;
+
+    /// The settled-turn predicate's velocities kept in a leg's memo are
+    /// those worked out afresh, bit for bit, whichever of the course turned
+    /// to, the course before and the speed changes between two asks.
+    #[test]
+    fn turn_velocities_are_reused_only_for_the_same_bits() {
+        let mut memo = LegMemo::default();
+        let own = VesselState::new(DVec2::ZERO, 0.3, 6.0, 100.0);
+        let fresh = |before_rad: f64, own: &VesselState| {
+            let before = VesselState {
+                course_rad: before_rad,
+                ..*own
+            };
+            (own.velocity_mps(), before.velocity_mps())
+        };
+        let asks = [
+            (1.2, own),
+            (1.2, own),
+            (1.3, own),
+            (
+                1.3,
+                VesselState {
+                    course_rad: 0.4,
+                    ..own
+                },
+            ),
+            (
+                1.3,
+                VesselState {
+                    speed_mps: 5.0,
+                    ..own
+                },
+            ),
+            (1.2, own),
+        ];
+        for (before_rad, own) in asks {
+            let (own_mps, before_mps) = memo.turn_velocities(before_rad, &own);
+            let (want_own, want_before) = fresh(before_rad, &own);
+            assert_eq!(
+                own_mps.to_array().map(f64::to_bits),
+                want_own.to_array().map(f64::to_bits)
+            );
+            assert_eq!(
+                before_mps.to_array().map(f64::to_bits),
+                want_before.to_array().map(f64::to_bits)
+            );
+        }
+        // A target's velocity asked before the latch step sized the memo.
+        let target = VesselState::new(DVec2::new(100.0, 0.0), 2.0, 4.0, 50.0);
+        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+    }
 
     /// A vessel 5 km to starboard on the reciprocal course passes clear: on
     /// the straight run it is remembered as one no risk can reach, and the
