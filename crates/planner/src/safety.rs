@@ -130,6 +130,8 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     goal_m: DVec2,
     start_time_s: f64,
     steady_course_rad: f64,
+    /// Whether ownship is turning at the plan's start (decision 57).
+    turning_at_start: bool,
     constraint: &'a C,
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
@@ -160,6 +162,7 @@ impl<'a> SafetyChecker<'a> {
             goal_m,
             start_time_s,
             steady_course_rad: ownship.course_rad,
+            turning_at_start: false,
             constraint: &NoConstraint,
             in_reach: None,
             leg_memo: true,
@@ -178,6 +181,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint,
             in_reach: self.in_reach,
             leg_memo: self.leg_memo,
@@ -262,6 +266,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint: self.constraint,
             in_reach: Some(in_reach),
             leg_memo: self.leg_memo,
@@ -312,6 +317,20 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     #[must_use]
     pub fn constraint(&self) -> &'a C {
         self.constraint
+    }
+
+    /// Whether ownship is turning at the plan's start
+    /// ([`PlanningProblem::turning_at_start`](crate::PlanningProblem::turning_at_start)).
+    #[must_use]
+    pub fn turning_at_start(&self) -> bool {
+        self.turning_at_start
+    }
+
+    /// The checker with ownship turning at the plan's start, or not.
+    #[must_use]
+    pub fn with_turning_at_start(mut self, turning: bool) -> Self {
+        self.turning_at_start = turning;
+        self
     }
 
     /// The checker with `steady_course_rad` (if given) as the course ownship
@@ -423,12 +442,16 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         candidate: &Move,
     ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
-        if self.config.compliance == Compliance::SafetyOnly
-            || !is_port_turn(
-                course_change_rad(course_before_rad, candidate.course_rad),
-                rules,
-            )
-        {
+        // Checked at every level of the graded fallback, safety only too
+        // (decision 57): rules 2(b) and 17(b) allow a departure from the
+        // steering rules to avoid immediate danger, and a turn that makes a
+        // vessel a risk of collision where it was none creates one. Only the
+        // evasive manoeuvre, when no level finds a plan, is judged against
+        // nothing.
+        if !is_port_turn(
+            course_change_rad(course_before_rad, candidate.course_rad),
+            rules,
+        ) {
             return Ok(());
         }
         let own = VesselState {
