@@ -131,7 +131,7 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     start_time_s: f64,
     steady_course_rad: f64,
     /// Whether ownship is turning at the plan's start (decision 57).
-    turning_at_start: bool,
+    pub(crate) turning_at_start: bool,
     constraint: &'a C,
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
@@ -319,14 +319,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         self.constraint
     }
 
-    /// Whether ownship is turning at the plan's start
-    /// ([`PlanningProblem::turning_at_start`](crate::PlanningProblem::turning_at_start)).
-    #[must_use]
-    pub fn turning_at_start(&self) -> bool {
-        self.turning_at_start
-    }
-
-    /// The checker with ownship turning at the plan's start, or not.
+    /// The checker with [`PlanningProblem::turning_at_start`](crate::PlanningProblem::turning_at_start).
     #[must_use]
     pub fn with_turning_at_start(mut self, turning: bool) -> Self {
         self.turning_at_start = turning;
@@ -442,16 +435,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         candidate: &Move,
     ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
-        // Checked at every level of the graded fallback, safety only too
-        // (decision 57): rules 2(b) and 17(b) allow a departure from the
-        // steering rules to avoid immediate danger, and a turn that makes a
-        // vessel a risk of collision where it was none creates one. Only the
-        // evasive manoeuvre, when no level finds a plan, is judged against
-        // nothing.
-        if !is_port_turn(
-            course_change_rad(course_before_rad, candidate.course_rad),
-            rules,
-        ) {
+        // At every level (decision 57): rules 2(b), 17(b) allow a departure
+        // to avoid immediate danger, not one that makes a vessel a risk.
+        let turn_rad = course_change_rad(course_before_rad, candidate.course_rad);
+        if !is_port_turn(turn_rad, rules) {
             return Ok(());
         }
         let own = VesselState {

@@ -386,7 +386,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         let turn_from_rad = [
             Some(before_course_rad),
             (start_elapsed_s <= 0.0
-                && !self.turning_at_start()
+                && !self.turning_at_start
                 && before_course_rad.to_bits() != leg.start_course_rad.to_bits())
             .then_some(leg.start_course_rad),
         ];

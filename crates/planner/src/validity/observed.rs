@@ -106,7 +106,7 @@ mod tests {
         let leg = Leg::turning_onto(from, 335f64.to_radians(), radius_m, speed_mps, 6_000.0);
         let turn_s = leg.turn_duration_s();
         assert!((turn_s - 320.0).abs() < 1.0, "{turn_s}");
-        let (now_rad, before_rad) = observed_turn_rad(&leg, turn_s);
+        let (now_rad, _) = observed_turn_rad(&leg, turn_s);
         let heading_rad = leg.pose_at(turn_s).course_rad;
         let lag_deg = angle::normalize_pi(now_rad - heading_rad).to_degrees();
         assert!((lag_deg - 15.0).abs() < 2.0, "{lag_deg}");
