@@ -68,6 +68,8 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     goal_m: DVec2,
     start_time_s: f64,
     steady_course_rad: f64,
+    /// Whether ownship is turning at the plan's start (decision 57).
+    pub(crate) turning_at_start: bool,
     constraint: &'a C,
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
@@ -98,6 +100,7 @@ impl<'a> SafetyChecker<'a> {
             goal_m,
             start_time_s,
             steady_course_rad: ownship.course_rad,
+            turning_at_start: false,
             constraint: &NoConstraint,
             in_reach: None,
             leg_memo: true,
@@ -116,6 +119,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint,
             in_reach: self.in_reach,
             leg_memo: self.leg_memo,
@@ -200,6 +204,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint: self.constraint,
             in_reach: Some(in_reach),
             leg_memo: self.leg_memo,
@@ -250,6 +255,13 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     #[must_use]
     pub fn constraint(&self) -> &'a C {
         self.constraint
+    }
+
+    /// The checker with [`PlanningProblem::turning_at_start`](crate::PlanningProblem::turning_at_start).
+    #[must_use]
+    pub fn with_turning_at_start(mut self, turning: bool) -> Self {
+        self.turning_at_start = turning;
+        self
     }
 
     /// The checker with `steady_course_rad` (if given) as the course ownship
@@ -386,12 +398,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         memo: &mut LegMemo,
     ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
-        if self.config.compliance == Compliance::SafetyOnly
-            || !is_port_turn(
-                course_change_rad(course_before_rad, candidate.course_rad),
-                rules,
-            )
-        {
+        // At every level (decision 57): rules 2(b), 17(b) allow a departure
+        // to avoid immediate danger, not one that makes a vessel a risk.
+        let turn_rad = course_change_rad(course_before_rad, candidate.course_rad);
+        if !is_port_turn(turn_rad, rules) {
             return Ok(());
         }
         let own = VesselState {

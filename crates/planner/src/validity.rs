@@ -33,6 +33,7 @@ use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_se
 use vorrt_jfs::{Leg, LinearTrack};
 
 mod memo;
+mod observed;
 pub(crate) use memo::{Along, LegMemo};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -397,6 +398,47 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         } else {
             leg.start_course_rad
         };
+        // The courses a port turn of this leg is judged from (decision 57).
+        // On a plan's first leg the observer's steady course still lags a
+        // turn ended within the window before the plan (it is the course
+        // before that turn); an encounter arising later in the leg's turn
+        // is judged by the evaluation from the course held at the leg's
+        // start (looking back a window into the turn, then to its start).
+        // Both are asked, where ownship holds its course at the start (a
+        // plan made part way round a turn is judged from the course before
+        // it alone): a return to the old course soon after an alteration
+        // is a port turn from the course then held.
+        let turn_from_rad = [
+            Some(before_course_rad),
+            (start_elapsed_s <= 0.0
+                && !self.turning_at_start
+                && before_course_rad.to_bits() != leg.start_course_rad.to_bits())
+            .then_some(leg.start_course_rad),
+        ];
+        // A port turn in this leg is also judged as an observer of course
+        // over ground judges it at the piece's start: the course over the
+        // last window, from the course its steady-course search reaches
+        // (`observed::observed_turn_rad`; decision 57).
+        let turns_to_port = leg.turn_rad < 0.0 || turn_from_rad[1].is_some();
+        let check_turn = |candidate: &Move, memo: &mut LegMemo| {
+            turn_from_rad.iter().flatten().try_for_each(|&from_rad| {
+                checker.check_settled_turn_reusing(from_rad, candidate, memo)
+            })?;
+            if !turns_to_port {
+                return Ok(());
+            }
+            let (over_ground_rad, seen_before_rad) =
+                observed::observed_turn_rad(leg, candidate.start_elapsed_s - start_elapsed_s);
+            let seen = Move {
+                course_rad: over_ground_rad,
+                ..*candidate
+            };
+            turn_from_rad
+                .iter()
+                .flatten()
+                .chain(&seen_before_rad)
+                .try_for_each(|&from_rad| checker.check_settled_turn_reusing(from_rad, &seen, memo))
+        };
         // An observer judging course over ground over a window sees the
         // turn for a window after it ends, and a new encounter is judged
         // against the course a window before it arose: two windows.
@@ -442,7 +484,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 // course over ground part way round), and a vessel that
                 // acts answers it (decision 51).
                 if piece.turning {
-                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
+                    check_turn(&candidate, &mut memo)?;
                 }
             } else {
                 if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
@@ -453,7 +495,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                     // within MTD part way through the window's last piece
                     // is latched there by the evaluation, and is seen at the
                     // next piece's start (decision 51).
-                    checker.check_settled_turn_reusing(before_course_rad, &candidate, &mut memo)?;
+                    check_turn(&candidate, &mut memo)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
@@ -533,6 +575,7 @@ pub fn check_legs_with<C: Constraint>(
         problem.start_time_s,
     )
     .with_steady_course(problem.steady_course_rad)
+    .with_turning_at_start(problem.turning_at_start)
     .with_constraint(constraint);
     let targets = tracks.len();
     let mut state = EncounterState {

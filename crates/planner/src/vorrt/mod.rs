@@ -453,6 +453,7 @@ impl<C: Constraint> Planner<C> {
             problem.start_time_s,
         )
         .with_steady_course(problem.steady_course_rad)
+        .with_turning_at_start(problem.turning_at_start)
         .with_constraint(&self.constraint);
         let checker = Replaying {
             validator: &checker,
