@@ -224,7 +224,9 @@ pub struct PlanEventReport {
     /// Where ownship's course came from: the planner's search
     /// (`one_alteration` or `two_alterations` from the root, `tree`), or on
     /// failure `evasive` (the evasive manoeuvre) or `previous_plan` (the
-    /// plan in force, still safe, kept).
+    /// plan in force kept: still valid, `full`; or held as the manoeuvre
+    /// under way when no evasive course is clearly better, `safety_only`,
+    /// decision 56).
     pub source: String,
     /// The COLREGs duties the plan keeps: `full`, or the graded fallback
     /// level `directions` or `safety_only` (an evasive manoeuvre is

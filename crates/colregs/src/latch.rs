@@ -5,7 +5,7 @@
 // The latch's state lives with the encounter types, so the rule book can
 // judge it without depending on this module.
 pub use crate::encounter::EncounterLatch;
-use crate::encounter::{Encounter, classify};
+use crate::encounter::{Encounter, Role, classify};
 use crate::parameters::RuleParameters;
 use crate::risk::assess_risk_moving;
 use crate::rules::within_mtd;
@@ -105,7 +105,9 @@ pub fn update_latch(
 /// that course until the turn shows, so an alteration begun just before risk
 /// arose counts as action taken for the encounter (rules 8(b), 16), and a
 /// turn cannot dodge an encounter it was made for. Whether a latched
-/// encounter has passed is judged on the course steered (`own`).
+/// encounter has passed is judged on the course steered (`own`), and for
+/// an encounter in which ownship stands on, on `steady_course_rad` as well:
+/// her own turn, while it shows, does not end it (decision 58).
 ///
 /// ```
 /// use vorrt_colregs::{update_latch_steady, Encounter, RuleParameters, VesselState};
@@ -216,11 +218,35 @@ fn latch_step(
     target: &VesselState,
     (time_s, parameters): (f64, &RuleParameters),
 ) -> Option<EncounterLatch> {
+    // A stand-on vessel's own turn does not end her encounter (rule 17(a)(i)
+    // with 8(d): she keeps course and speed until the other vessel is finally
+    // past and clear): a range that opens only because ownship's velocity
+    // swings round in a turn (for another vessel, say) is no passing. Passed
+    // is then judged on the course she held as well (her steady course, as
+    // an observer still sees it), and the encounter ends when both say so
+    // (decision 58). A give-way vessel's turn is her action and may end it.
+    let stand_on_passed = |latch: &EncounterLatch| {
+        latch.encounter.role() != Role::StandOn
+            || steady_course_rad.to_bits() == own.course_rad.to_bits()
+            || {
+                let seen = VesselState {
+                    course_rad: steady_course_rad,
+                    ..*own
+                };
+                has_passed_moving(
+                    own.position_m,
+                    risk_velocities(&seen),
+                    target,
+                    latch.encounter,
+                    parameters,
+                )
+            }
+    };
     let passed = |encounter: Encounter| {
         has_passed_moving(own.position_m, velocities(), target, encounter, parameters)
     };
     match current {
-        Some(latch) if passed(latch.encounter) => None,
+        Some(latch) if passed(latch.encounter) && stand_on_passed(&latch) => None,
         Some(latch) => Some(latch),
         None => {
             // Beyond MTD there is no risk (and no need to work out the CPA).
@@ -269,6 +295,59 @@ mod tests {
         let own_later = VesselState::new(DVec2::new(500.0, 3600.0), 0.0, 6.0, 50.0);
         let target_later = VesselState::new(DVec2::new(0.0, 2400.0), PI, 6.0, 50.0);
         assert!(update_latch(latch, &own_later, &target_later, 600.0, &params).is_none());
+    }
+
+    /// Decision 58: open sea, 8 COLREGs-obeying targets, seed 11, run 48.
+    /// Ownship stands on for a vessel crossing from port 4.3 km off on her
+    /// port quarter and turns 35° to starboard for another vessel; part way
+    /// round, her velocity points away and the range opens for a moment
+    /// while wider than the risk distance. The vessel from port has not
+    /// passed: on the course ownship held (as an observer still sees it)
+    /// the range is closing. The stand-on encounter stays latched until
+    /// it has passed on both; a give-way encounter ends on the turn.
+    #[test]
+    fn a_stand_on_vessels_own_turn_does_not_end_her_encounter() {
+        let params = RuleParameters::default();
+        // Turned to east (90°) from north (0°), the vessel from port 4.3 km
+        // due west heading east, slower: opening on the course steered,
+        // closing on the course held.
+        let own = VesselState::new(DVec2::ZERO, 0.5 * PI, 6.0, 100.0);
+        let target = VesselState::new(DVec2::new(-4300.0, 0.0), 0.5 * PI, 5.0, 100.0);
+        assert!(has_passed(
+            &own,
+            &target,
+            Encounter::CrossingStandOn,
+            &params
+        ));
+        let held = VesselState {
+            course_rad: 0.0,
+            ..own
+        };
+        assert!(!has_passed(
+            &held,
+            &target,
+            Encounter::CrossingStandOn,
+            &params
+        ));
+        for encounter in [Encounter::CrossingStandOn, Encounter::BeingOvertaken] {
+            let latch = Some(EncounterLatch::new(encounter, &held, 0.0));
+            assert_eq!(
+                update_latch_steady(latch, &own, 0.0, &target, 100.0, &params),
+                latch,
+                "{encounter:?}"
+            );
+            // Once the new course is the one held, the opening range ends it.
+            assert_eq!(
+                update_latch_steady(latch, &own, 0.5 * PI, &target, 200.0, &params),
+                None,
+                "{encounter:?}"
+            );
+        }
+        let give_way = Some(EncounterLatch::new(Encounter::CrossingGiveWay, &held, 0.0));
+        assert_eq!(
+            update_latch_steady(give_way, &own, 0.0, &target, 100.0, &params),
+            None
+        );
     }
 
     #[test]

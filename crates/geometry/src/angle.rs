@@ -45,6 +45,17 @@ pub fn unit_to_course(direction: DVec2) -> f64 {
 #[inline]
 #[must_use]
 pub fn normalize_2pi(angle_rad: f64) -> f64 {
+    // The common cases without `fmod`, to the same bits as `rem_euclid`:
+    // within [0, 2π) the remainder is the angle itself; within (-2π, 0) it
+    // is the angle, to which `rem_euclid` adds 2π (-2π itself gives -0.0
+    // there, so it takes the general path).
+    if (0.0..TAU).contains(&angle_rad) {
+        return angle_rad;
+    }
+    if angle_rad > -TAU && angle_rad < 0.0 {
+        let wrapped = angle_rad + TAU;
+        return if wrapped >= TAU { 0.0 } else { wrapped };
+    }
     let wrapped = angle_rad.rem_euclid(TAU);
     // rem_euclid can return TAU itself for tiny negative inputs.
     if wrapped >= TAU { 0.0 } else { wrapped }
@@ -109,6 +120,65 @@ mod tests {
         assert!((normalize_pi(3.0 * FRAC_PI_2) + FRAC_PI_2).abs() < 1e-12);
         assert_eq!(normalize_pi(PI), PI);
         assert!(normalize_2pi(-1e-18) < TAU);
+    }
+
+    /// The reference: `normalize_2pi` as written before its fast paths.
+    fn normalize_2pi_by_rem_euclid(angle_rad: f64) -> f64 {
+        let wrapped = angle_rad.rem_euclid(TAU);
+        if wrapped >= TAU { 0.0 } else { wrapped }
+    }
+
+    /// The fast paths give the same bits as `rem_euclid` everywhere: at the
+    /// edges of both ranges, for tiny, huge and non-finite angles, and for
+    /// a million angles spread over (-8π, 8π).
+    #[test]
+    fn normalisation_fast_paths_keep_the_bits() {
+        let mut angles = vec![
+            0.0,
+            -0.0,
+            TAU,
+            -TAU,
+            PI,
+            -PI,
+            TAU - f64::EPSILON * 4.0,
+            -TAU + f64::EPSILON * 4.0,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            -1e-18,
+            1e-300,
+            -1e-300,
+            1e18,
+            -1e18,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        for base in [TAU, -TAU, 0.0] {
+            let mut up = base;
+            let mut down = base;
+            for _ in 0..8 {
+                up = f64::from_bits(up.to_bits() + 1);
+                down = f64::from_bits(down.to_bits().wrapping_sub(1));
+                angles.extend([up, down]);
+            }
+        }
+        // A linear congruential walk: deterministic, no dependency.
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        for _ in 0..1_000_000 {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            #[expect(clippy::cast_precision_loss, reason = "a uniform draw")]
+            let unit = (state >> 11) as f64 / (1u64 << 53) as f64;
+            angles.push((unit - 0.5) * 16.0 * PI);
+        }
+        for angle in angles {
+            assert_eq!(
+                normalize_2pi(angle).to_bits(),
+                normalize_2pi_by_rem_euclid(angle).to_bits(),
+                "{angle:e}"
+            );
+        }
     }
 
     #[test]

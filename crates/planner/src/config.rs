@@ -98,8 +98,10 @@ pub enum Compliance {
     /// The directions of rules 14, 15 and 17 only: a smaller, later or
     /// shorter alteration is allowed (a departure from rules 8 and 16).
     Directions,
-    /// Clearance and velocity obstacles only: a departure from the steering
-    /// rules to avoid immediate danger (rules 2(b), 17(b)).
+    /// Clearance and velocity obstacles, and no port turn that makes a
+    /// vessel a risk of collision (decision 57): a departure from the
+    /// steering rules to avoid immediate danger (rules 2(b), 17(b)), never
+    /// one that creates a danger.
     SafetyOnly,
 }
 
@@ -115,7 +117,8 @@ impl Compliance {
     }
 
     /// Whether the validity check at this level can refuse a move for
-    /// `cause`: clearance and velocity obstacles at every level; the
+    /// `cause`: clearance, velocity obstacles and a port turn toward a
+    /// vessel that makes it a risk (decision 57) at every level; the
     /// manner of the action (its size, when it begins, that it is held:
     /// rules 8, 16, checked by `vorrt_colregs::check_alteration` and
     /// `check_action`) only at `Full`; the other COLREGs duties (the
@@ -127,13 +130,17 @@ impl Compliance {
     #[must_use]
     pub fn checks(self, cause: RejectionCause) -> bool {
         use vorrt_colregs::ManeuverViolation::{
-            AlterationNotHeld, InsufficientAlteration, LateAction,
+            AlterationNotHeld, InsufficientAlteration, LateAction, PortTurnTowardVessel,
         };
         match cause {
             RejectionCause::VelocityObstacle
             | RejectionCause::Clearance
             | RejectionCause::ClearanceAhead
-            | RejectionCause::Constraint(_) => true,
+            | RejectionCause::Constraint(_)
+            // A port turn onto a vessel that made it a risk (decision 57):
+            // a departure that creates a danger, never one that avoids it
+            // (rules 2(b), 17(b)).
+            | RejectionCause::Colregs(PortTurnTowardVessel) => true,
             RejectionCause::Colregs(InsufficientAlteration | LateAction | AlterationNotHeld) => {
                 self == Compliance::Full
             }

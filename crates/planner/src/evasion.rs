@@ -138,6 +138,21 @@ pub fn evasive_leg<M: MotionModel>(
 /// than one that holds a course that keeps nearly as far.
 pub const EVASION_HOLD_MARGIN_M: f64 = 100.0;
 
+/// Whether the manoeuvre under way, keeping `held_m` from every target (by
+/// the evasive manoeuvre's measure, `EvasiveManeuver::min_distance_m`), is
+/// held rather than replaced by another keeping `other_m`: it keeps the
+/// clearance, or it is not expected to touch (more than 0 m between the
+/// hulls) and the other neither keeps the clearance nor keeps
+/// [`EVASION_HOLD_MARGIN_M`] farther (decision 24; rule 8(b): one readily
+/// apparent action, not a succession). The one judgement for an evasive
+/// manoeuvre in force and for a plan in force that no longer passes the
+/// validity check (decision 56).
+#[must_use]
+pub fn holds_manoeuvre_in_force(held_m: f64, other_m: f64, clearance_m: f64) -> bool {
+    held_m >= clearance_m
+        || (held_m > 0.0 && other_m < clearance_m && other_m < held_m + EVASION_HOLD_MARGIN_M)
+}
+
 /// As [`evasive_leg`], with the evasive manoeuvre in force, `holding`, tried
 /// first: it is kept if it still keeps the clearance, or if no other course
 /// and speed keeps the clearance nor keeps [`EVASION_HOLD_MARGIN_M`] farther.
@@ -283,7 +298,7 @@ pub fn evasive_leg_constrained<M: MotionModel, C: Constraint>(
     }
     if let Some((leg, maneuver)) = held
         && best.as_ref().is_none_or(|(_, other)| {
-            other.min_distance_m < maneuver.min_distance_m + EVASION_HOLD_MARGIN_M
+            holds_manoeuvre_in_force(maneuver.min_distance_m, other.min_distance_m, clearance_m)
         })
     {
         return (leg, maneuver);
@@ -332,29 +347,13 @@ fn keeps_farther(kept: Option<&(Leg, EvasiveManeuver)>, min_distance_m: f64) -> 
 /// lying still to `horizon_s` if it stops short) and any of `tracks`,
 /// metres, less the leg's own error where it turns or changes speed.
 fn leg_min_distance_m(leg: &Leg, tracks: &[LinearTrack], own_length_m: f64, horizon_s: f64) -> f64 {
-    let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
-    let sailed = leg
-        .pieces(0.0)
-        .map(|piece| {
-            tracks
-                .iter()
-                .map(|track| {
-                    min_distance_over(
-                        piece.start_m,
-                        piece.velocity_mps,
-                        track,
-                        piece.elapsed_s,
-                        piece.duration_s,
-                    ) - contact_range_m(own_length_m, track.vessel.length_m)
-                        - if piece.turning {
-                            piece_error_m
-                        } else {
-                            timing_error_m
-                        }
-                })
-                .fold(f64::INFINITY, f64::min)
-        })
-        .fold(f64::INFINITY, f64::min);
+    // The leg is cut to the horizon already: every piece of it counts.
+    let sailed = legs_min_distance_m(
+        std::slice::from_ref(leg),
+        tracks,
+        own_length_m,
+        f64::INFINITY,
+    );
     // Stopped short of the horizon: lying still for the rest of it.
     let still_s = horizon_s - leg.duration_s();
     let lying = if still_s > 0.0 {
@@ -369,6 +368,59 @@ fn leg_min_distance_m(leg: &Leg, tracks: &[LinearTrack], own_length_m: f64, hori
         f64::INFINITY
     };
     sailed.min(lying)
+}
+
+/// The smallest distance between the hulls of ownship sailing `legs` one
+/// after the other from the problem's start and any of `tracks` (the
+/// targets as predicted), metres, over the first `horizon_s` seconds, less
+/// each leg's own error where it turns or changes speed: the measure the
+/// evasive manoeuvre keeps farthest, for a plan of several legs (the plan in
+/// force, [`legs_min_distance`]).
+fn legs_min_distance_m(
+    legs: &[Leg],
+    tracks: &[LinearTrack],
+    own_length_m: f64,
+    horizon_s: f64,
+) -> f64 {
+    let mut best = f64::INFINITY;
+    let mut leg_start_s = 0.0;
+    for leg in legs {
+        if leg_start_s >= horizon_s {
+            break;
+        }
+        let (piece_error_m, timing_error_m) = (leg.piece_error_m(), leg.timing_error_m());
+        for piece in leg.pieces(0.0) {
+            let from_s = leg_start_s + piece.elapsed_s;
+            let duration_s = piece.duration_s.min(horizon_s - from_s);
+            if duration_s <= 0.0 {
+                break;
+            }
+            let error_m = if piece.turning {
+                piece_error_m
+            } else {
+                timing_error_m
+            };
+            for track in tracks {
+                let distance_m =
+                    min_distance_over(piece.start_m, piece.velocity_mps, track, from_s, duration_s)
+                        - contact_range_m(own_length_m, track.vessel.length_m)
+                        - error_m;
+                best = best.min(distance_m);
+            }
+        }
+        leg_start_s += leg.duration_s();
+    }
+    best
+}
+
+/// The smallest distance between the hulls of ownship sailing `legs` from
+/// `problem`'s start and any of its targets as predicted, over
+/// `horizon_s`, metres: the measure [`evasive_leg_holding`] judges its
+/// courses by (`EvasiveManeuver::min_distance_m`), for the rest of a plan.
+#[must_use]
+pub fn legs_min_distance(problem: &PlanningProblem, legs: &[Leg], horizon_s: f64) -> f64 {
+    let tracks: Vec<_> = problem.targets.iter().map(TargetState::track).collect();
+    legs_min_distance_m(legs, &tracks, problem.ownship.length_m, horizon_s)
 }
 
 /// Whether `leg` keeps `constraint` along the curve sailed.

@@ -23,7 +23,7 @@ pub use constraint::{Constraint, ConstraintViolation, NoConstraint, Segment};
 pub use error::PlannerError;
 pub use evasion::{
     EVASION_HOLD_MARGIN_M, EvasionSearch, EvasiveManeuver, evasive_course, evasive_leg,
-    evasive_leg_constrained, evasive_leg_holding,
+    evasive_leg_constrained, evasive_leg_holding, holds_manoeuvre_in_force, legs_min_distance,
 };
 pub use land::{LandConstraint, LandError};
 pub use plan::{Plan, PlanSource, PlanStatistics, RejectionCause, RejectionCounts, Waypoint};

@@ -59,6 +59,15 @@ pub struct PlanningProblem {
     /// judge it.
     #[serde(default)]
     pub steady_course_rad: Option<f64>,
+    /// Whether ownship is turning at the start (its course changed over
+    /// the last step faster than
+    /// [`STEADY_TURN_RATE_RAD_S`](vorrt_colregs::rules::STEADY_TURN_RATE_RAD_S)),
+    /// as a closed loop knows it; `false` (the default): holding its
+    /// course. Holding a course it came round to within the last window,
+    /// an observer judges a turn begun now from that course as well as
+    /// from `steady_course_rad` (decision 57).
+    #[serde(default)]
+    pub turning_at_start: bool,
 }
 
 impl PlanningProblem {
@@ -74,6 +83,7 @@ impl PlanningProblem {
             encounters: Vec::new(),
             alterations: Vec::new(),
             steady_course_rad: None,
+            turning_at_start: false,
         }
     }
 

@@ -141,6 +141,12 @@ impl Verdicts {
         self.replayed = 0;
     }
 
+    /// Whether the earlier search's verdicts are still being replayed (this
+    /// search has not parted from it).
+    pub(crate) fn replaying(&self) -> bool {
+        !self.parted
+    }
+
     /// The verdict of the next move, where the earlier search's is known
     /// to be this level's.
     fn known(&self) -> Option<Verdict> {

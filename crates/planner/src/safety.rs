@@ -26,6 +26,7 @@
 use crate::config::{Compliance, PlannerConfig};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
+use crate::validity::LegMemo;
 use glam::DVec2;
 use vorrt_colregs::rules::{
     PortTurnGate, acting_for_any, course_change_rad, is_port_turn,
@@ -36,74 +37,11 @@ use vorrt_colregs::{
     check_alteration, check_heading, check_motion,
 };
 use vorrt_geometry::VelocityObstacle;
-use vorrt_geometry::cpa::cpa_clamped;
 use vorrt_jfs::LinearTrack;
 
-/// The smallest distance between ownship, leaving `start_m` with
-/// `velocity_mps`, and a target on `track`, over `duration_s` seconds starting
-/// `track_elapsed_s` after the track's time zero. The target may turn onto
-/// its second leg, or stop, part way: each piece of constant target velocity
-/// is one closest-point-of-approach test, and distances to the second leg
-/// are counted `track.then_margin_m` short (the timing of the turn is
-/// uncertain).
-#[must_use]
-pub fn min_distance_over(
-    start_m: DVec2,
-    velocity_mps: DVec2,
-    track: &LinearTrack,
-    track_elapsed_s: f64,
-    duration_s: f64,
-) -> f64 {
-    // Seconds into the interval at which the target stops.
-    let stops_s = (track.moving_for_s - track_elapsed_s).clamp(0.0, duration_s);
-    if track.turns_at_s >= track.moving_for_s {
-        // One leg (every target but one expected to return to its route):
-        // moving, then at rest. The general pieces below give the same
-        // values, but written once for both cases they made `plan/tss` a
-        // fifth and `plan/tss_instant` a quarter slower (criterion), so the
-        // common case keeps its own two tests.
-        let target_start = track.position_at(track_elapsed_s);
-        let mut best = f64::INFINITY;
-        if stops_s > 0.0 {
-            best = cpa_clamped(
-                start_m - target_start,
-                velocity_mps - track.velocity_mps,
-                stops_s,
-            )
-            .distance_m;
-        }
-        if stops_s < duration_s {
-            let own_then = start_m + velocity_mps * stops_s;
-            let target_then = track.position_at(track_elapsed_s + stops_s);
-            let cpa = cpa_clamped(own_then - target_then, velocity_mps, duration_s - stops_s);
-            best = best.min(cpa.distance_m);
-        }
-        return best;
-    }
-    // Seconds into the interval at which the target turns.
-    let turns_s = (track.turns_at_s - track_elapsed_s).clamp(0.0, duration_s);
-    let piece = |from_s: f64, to_s: f64, target_velocity_mps: DVec2| {
-        if to_s > from_s {
-            let own_then = start_m + velocity_mps * from_s;
-            let target_then = track.position_at(track_elapsed_s + from_s);
-            cpa_clamped(
-                own_then - target_then,
-                velocity_mps - target_velocity_mps,
-                to_s - from_s,
-            )
-            .distance_m
-        } else {
-            f64::INFINITY
-        }
-    };
-    let mut best = piece(0.0, turns_s, track.velocity_mps);
-    // Where it turns is known only so well: its second leg is kept
-    // `then_margin_m` farther off.
-    best = best.min(piece(turns_s, stops_s, track.then_velocity_mps) - track.then_margin_m);
-    // The target is at rest for the rest of the interval.
-    best = best.min(piece(stops_s, duration_s, DVec2::ZERO));
-    best
-}
+mod distance;
+use distance::beyond_reach;
+pub use distance::min_distance_over;
 
 /// One candidate move out of a parent node.
 #[derive(Debug, Clone, Copy)]
@@ -130,6 +68,8 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     goal_m: DVec2,
     start_time_s: f64,
     steady_course_rad: f64,
+    /// Whether ownship is turning at the plan's start (decision 57).
+    pub(crate) turning_at_start: bool,
     constraint: &'a C,
     /// Per target, whether it may come within reach of the leg being
     /// judged ([`SafetyChecker::within_reach`]); `None`: every target.
@@ -160,6 +100,7 @@ impl<'a> SafetyChecker<'a> {
             goal_m,
             start_time_s,
             steady_course_rad: ownship.course_rad,
+            turning_at_start: false,
             constraint: &NoConstraint,
             in_reach: None,
             leg_memo: true,
@@ -178,6 +119,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint,
             in_reach: self.in_reach,
             leg_memo: self.leg_memo,
@@ -262,6 +204,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             goal_m: self.goal_m,
             start_time_s: self.start_time_s,
             steady_course_rad: self.steady_course_rad,
+            turning_at_start: self.turning_at_start,
             constraint: self.constraint,
             in_reach: Some(in_reach),
             leg_memo: self.leg_memo,
@@ -314,6 +257,13 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         self.constraint
     }
 
+    /// The checker with [`PlanningProblem::turning_at_start`](crate::PlanningProblem::turning_at_start).
+    #[must_use]
+    pub fn with_turning_at_start(mut self, turning: bool) -> Self {
+        self.turning_at_start = turning;
+        self
+    }
+
     /// The checker with `steady_course_rad` (if given) as the course ownship
     /// held before the turn it is in at the plan's start.
     #[must_use]
@@ -345,6 +295,18 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 continue;
             }
             let clearance = self.required_distance_m(track) + margin_m;
+            let range_m = candidate
+                .start_m
+                .distance(track.position_at(candidate.start_elapsed_s));
+            if beyond_reach(
+                range_m,
+                candidate.velocity_mps.length(),
+                track,
+                candidate.duration_s,
+                clearance,
+            ) {
+                continue;
+            }
             let during = min_distance_over(
                 candidate.start_m,
                 candidate.velocity_mps,
@@ -422,13 +384,24 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         course_before_rad: f64,
         candidate: &Move,
     ) -> Result<(), RejectionCause> {
+        self.check_settled_turn_reusing(course_before_rad, candidate, &mut LegMemo::default())
+    }
+
+    /// [`check_settled_turn`](Self::check_settled_turn) with a leg's
+    /// `memo`: ownship's velocities on the course turned to and the course
+    /// before, and each target's, reused from an earlier piece where worked
+    /// out for the same bits (the same verdict).
+    pub(crate) fn check_settled_turn_reusing(
+        &self,
+        course_before_rad: f64,
+        candidate: &Move,
+        memo: &mut LegMemo,
+    ) -> Result<(), RejectionCause> {
         let rules = &self.config.rules;
-        if self.config.compliance == Compliance::SafetyOnly
-            || !is_port_turn(
-                course_change_rad(course_before_rad, candidate.course_rad),
-                rules,
-            )
-        {
+        // At every level (decision 57): rules 2(b), 17(b) allow a departure
+        // to avoid immediate danger, not one that makes a vessel a risk.
+        let turn_rad = course_change_rad(course_before_rad, candidate.course_rad);
+        if !is_port_turn(turn_rad, rules) {
             return Ok(());
         }
         let own = VesselState {
@@ -457,18 +430,13 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 continue;
             }
             let target = track.state_at(candidate.start_elapsed_s);
-            let (own_mps, before_mps) = *own_mps.get_or_insert_with(|| {
-                let before = VesselState {
-                    course_rad: course_before_rad,
-                    ..own
-                };
-                (own.velocity_mps(), before.velocity_mps())
-            });
+            let (own_mps, before_mps) =
+                *own_mps.get_or_insert_with(|| memo.turn_velocities(course_before_rad, &own));
             if is_port_turn_toward_vessel_moving(
                 course_before_rad,
                 (&own, own_mps, before_mps),
                 &target,
-                target.velocity_mps(),
+                memo.target_velocity(index, &target),
                 rules,
             ) {
                 return Err(RejectionCause::Colregs(
@@ -560,14 +528,21 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             {
                 return Err(RejectionCause::VelocityObstacle);
             }
-            let during = min_distance_over(
+            // The segment's clearance, unless the range shows it wide.
+            if !beyond_reach(
+                range,
+                candidate.velocity_mps.length(),
+                track,
+                candidate.duration_s,
+                clearance,
+            ) && min_distance_over(
                 candidate.start_m,
                 candidate.velocity_mps,
                 track,
                 candidate.start_elapsed_s,
                 candidate.duration_s,
-            );
-            if during < clearance {
+            ) < clearance
+            {
                 return Err(RejectionCause::Clearance);
             }
             if near && lookahead_s > 0.0 {
@@ -628,62 +603,5 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             altered_rad,
             self.constraint.prefers_speed_changes(),
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use vorrt_jfs::TargetState;
-
-    #[test]
-    fn stopping_target_is_split_into_two_pieces() {
-        // Target moves east from x = 0 to x = 100 at 10 m/s, then waits there.
-        let track = TargetState::toward_goal(
-            VesselState::new(DVec2::ZERO, 0.0, 10.0, 10.0),
-            DVec2::new(100.0, 0.0),
-        )
-        .track();
-        // Ownship passes over x = 150 going south, from y = 100, at 10 m/s: it is
-        // nearest the stopped target at t = 10 s, 50 m away.
-        let distance = min_distance_over(
-            DVec2::new(100.0, 100.0),
-            DVec2::new(0.0, -10.0),
-            &track,
-            0.0,
-            20.0,
-        );
-        assert!((distance - 0.0).abs() < 1e-9, "{distance}");
-        let distance = min_distance_over(
-            DVec2::new(150.0, 100.0),
-            DVec2::new(0.0, -10.0),
-            &track,
-            0.0,
-            20.0,
-        );
-        assert!((distance - 50.0).abs() < 1e-9, "{distance}");
-    }
-
-    #[test]
-    fn a_turning_target_is_checked_on_both_legs() {
-        // East from the origin at 10 m/s for 10 s, then north for (100, 1000).
-        let track = TargetState::holding_course_then_toward_goal(
-            VesselState::new(DVec2::ZERO, std::f64::consts::FRAC_PI_2, 10.0, 10.0),
-            DVec2::new(100.0, 1000.0),
-            10.0,
-        )
-        .track();
-        // Ownship lies still at (100, 300): the target's second leg runs over it
-        // at t = 40 s (counted 100 m short: its turn's timing is uncertain by
-        // 10 s at 10 m/s), while its first leg alone passes 300 m off.
-        assert!((track.then_margin_m - 100.0).abs() < 1e-9);
-        let distance = min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 0.0, 60.0);
-        assert!((distance + 100.0).abs() < 1e-9, "{distance}");
-        let first_leg_only =
-            min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 0.0, 10.0);
-        assert!((first_leg_only - 300.0).abs() < 1e-9, "{first_leg_only}");
-        // From 20 s into the track: the second leg only.
-        let later = min_distance_over(DVec2::new(100.0, 300.0), DVec2::ZERO, &track, 20.0, 30.0);
-        assert!((later + 100.0).abs() < 1e-9, "{later}");
     }
 }

@@ -33,6 +33,7 @@ use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_se
 use vorrt_jfs::{Leg, LinearTrack};
 
 mod memo;
+mod observed;
 pub(crate) use memo::{Along, LegMemo};
 
 /// The encounters in force at one point of a branch: per target, the latch
@@ -355,6 +356,31 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
+        self.validate_pieces(leg, start_elapsed_s, state, &mut false)
+    }
+}
+
+impl<C: Constraint> SafetyChecker<'_, C> {
+    /// Whether the verdicts of [`validate_pieces`](Self::validate_pieces)
+    /// on a chord of a leg's turn are those of every leg with the same turn
+    /// whatever its straight run: the targets within reach are not worked
+    /// out per leg ([`worth_pruning`] is false for every leg).
+    pub(crate) fn turn_verdicts_shared(&self) -> bool {
+        self.tracks().len() < PRUNE_TARGETS
+    }
+
+    /// [`MotionValidator::validate`], saying in `on_turn` whether the piece
+    /// judged last (the one refused, on an error) is a chord of the leg's
+    /// turn: the chords, and everything judged on them, depend on the
+    /// leg's start, turn, speeds and start time, and not on its straight
+    /// run (where [`turn_verdicts_shared`](Self::turn_verdicts_shared)).
+    pub(crate) fn validate_pieces(
+        &self,
+        leg: &Leg,
+        start_elapsed_s: f64,
+        state: &mut EncounterState,
+        on_turn: &mut bool,
+    ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
         // once: the others can change no verdict (decision 33).
         let in_reach = worth_pruning(self, leg)
@@ -372,6 +398,47 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         } else {
             leg.start_course_rad
         };
+        // The courses a port turn of this leg is judged from (decision 57).
+        // On a plan's first leg the observer's steady course still lags a
+        // turn ended within the window before the plan (it is the course
+        // before that turn); an encounter arising later in the leg's turn
+        // is judged by the evaluation from the course held at the leg's
+        // start (looking back a window into the turn, then to its start).
+        // Both are asked, where ownship holds its course at the start (a
+        // plan made part way round a turn is judged from the course before
+        // it alone): a return to the old course soon after an alteration
+        // is a port turn from the course then held.
+        let turn_from_rad = [
+            Some(before_course_rad),
+            (start_elapsed_s <= 0.0
+                && !self.turning_at_start
+                && before_course_rad.to_bits() != leg.start_course_rad.to_bits())
+            .then_some(leg.start_course_rad),
+        ];
+        // A port turn in this leg is also judged as an observer of course
+        // over ground judges it at the piece's start: the course over the
+        // last window, from the course its steady-course search reaches
+        // (`observed::observed_turn_rad`; decision 57).
+        let turns_to_port = leg.turn_rad < 0.0 || turn_from_rad[1].is_some();
+        let check_turn = |candidate: &Move, memo: &mut LegMemo| {
+            turn_from_rad.iter().flatten().try_for_each(|&from_rad| {
+                checker.check_settled_turn_reusing(from_rad, candidate, memo)
+            })?;
+            if !turns_to_port {
+                return Ok(());
+            }
+            let (over_ground_rad, seen_before_rad) =
+                observed::observed_turn_rad(leg, candidate.start_elapsed_s - start_elapsed_s);
+            let seen = Move {
+                course_rad: over_ground_rad,
+                ..*candidate
+            };
+            turn_from_rad
+                .iter()
+                .flatten()
+                .chain(&seen_before_rad)
+                .try_for_each(|&from_rad| checker.check_settled_turn_reusing(from_rad, &seen, memo))
+        };
         // An observer judging course over ground over a window sees the
         // turn for a window after it ends, and a new encounter is judged
         // against the course a window before it arose: two windows.
@@ -382,6 +449,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         // velocities hold (decision 54).
         let mut memo = LegMemo::default();
         for piece in leg.pieces(self.config().step_m) {
+            *on_turn = piece.turning;
             let candidate = Move {
                 start_m: piece.start_m,
                 start_elapsed_s: start_elapsed_s + piece.elapsed_s,
@@ -416,7 +484,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                 // course over ground part way round), and a vessel that
                 // acts answers it (decision 51).
                 if piece.turning {
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    check_turn(&candidate, &mut memo)?;
                 }
             } else {
                 if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
@@ -427,7 +495,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
                     // within MTD part way through the window's last piece
                     // is latched there by the evaluation, and is seen at the
                     // next piece's start (decision 51).
-                    checker.check_settled_turn(before_course_rad, &candidate)?;
+                    check_turn(&candidate, &mut memo)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
@@ -507,6 +575,7 @@ pub fn check_legs_with<C: Constraint>(
         problem.start_time_s,
     )
     .with_steady_course(problem.steady_course_rad)
+    .with_turning_at_start(problem.turning_at_start)
     .with_constraint(constraint);
     let targets = tracks.len();
     let mut state = EncounterState {
@@ -530,6 +599,58 @@ mod tests {
     use super::*;
     use crate::PlannerConfig;
     use vorrt_jfs::TargetState;
+
+    /// The settled-turn predicate's velocities kept in a leg's memo are
+    /// those worked out afresh, bit for bit, whichever of the course turned
+    /// to, the course before and the speed changes between two asks.
+    #[test]
+    fn turn_velocities_are_reused_only_for_the_same_bits() {
+        let mut memo = LegMemo::default();
+        let own = VesselState::new(DVec2::ZERO, 0.3, 6.0, 100.0);
+        let fresh = |before_rad: f64, own: &VesselState| {
+            let before = VesselState {
+                course_rad: before_rad,
+                ..*own
+            };
+            (own.velocity_mps(), before.velocity_mps())
+        };
+        let asks = [
+            (1.2, own),
+            (1.2, own),
+            (1.3, own),
+            (
+                1.3,
+                VesselState {
+                    course_rad: 0.4,
+                    ..own
+                },
+            ),
+            (
+                1.3,
+                VesselState {
+                    speed_mps: 5.0,
+                    ..own
+                },
+            ),
+            (1.2, own),
+        ];
+        for (before_rad, own) in asks {
+            let (own_mps, before_mps) = memo.turn_velocities(before_rad, &own);
+            let (want_own, want_before) = fresh(before_rad, &own);
+            assert_eq!(
+                own_mps.to_array().map(f64::to_bits),
+                want_own.to_array().map(f64::to_bits)
+            );
+            assert_eq!(
+                before_mps.to_array().map(f64::to_bits),
+                want_before.to_array().map(f64::to_bits)
+            );
+        }
+        // A target's velocity asked before the latch step sized the memo.
+        let target = VesselState::new(DVec2::new(100.0, 0.0), 2.0, 4.0, 50.0);
+        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+    }
 
     /// A vessel 5 km to starboard on the reciprocal course passes clear: on
     /// the straight run it is remembered as one no risk can reach, and the

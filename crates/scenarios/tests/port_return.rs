@@ -40,12 +40,56 @@ fn run_19_makes_no_port_return_onto_the_vessel_from_port() {
             );
         }
         // TS2 no longer passes within 1 nm as the stand-on vessel of a
-        // crossing the return made (830 m before, constant targets).
+        // crossing the return made (830 m before, constant targets). With
+        // COLREGs-obeying targets TS2 now passes 701 m off, ownship standing
+        // on with no port return (1868 m before decision 57: see its "Not
+        // yet").
         let ts2 = &evaluation.targets[1];
+        if behaviour == TargetBehaviour::Colregs {
+            assert!(ts2.min_distance_m > 500.0, "{}", ts2.min_distance_m);
+            continue;
+        }
         assert!(
             ts2.min_distance_m > 1500.0,
             "{behaviour:?}: {}",
             ts2.min_distance_m
         );
+    }
+}
+
+/// Decision 57: the port returns left by decision 51 with constant targets
+/// (open sea, 2 targets, seed 11), each let through by another gap in the
+/// planner's check: run 111, a string of `safety_only` fallback plans,
+/// which did not check the port turn; run 185, a return begun less than a
+/// window after the alteration, judged from the course before that
+/// alteration (no turn) instead of the course then held; run 799, a 155°
+/// return judged on the steered heading, where the evaluation sees the
+/// course over ground of the last minute, still swinging, as a vessel
+/// comes within MTD.
+#[test]
+fn runs_111_185_799_make_no_port_return() {
+    for (index, seed) in [
+        (111, 4_654_229_725_192_512_665),
+        (185, 3_055_319_314_347_863_655),
+        (799, 7_774_615_476_898_146_628),
+    ] {
+        let spec = OpenSeaSpec::with_targets(2).with_behaviour(TargetBehaviour::Constant);
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+        let record = simulate(&scenario, seed).expect("valid settings");
+        let evaluation = evaluate(&scenario, &record);
+        assert!(!evaluation.collision, "run {index}");
+        assert!(evaluation.clearance_kept, "run {index}");
+        assert!(evaluation.reached_goal, "run {index}");
+        for target in &evaluation.targets {
+            assert!(
+                !target
+                    .findings
+                    .iter()
+                    .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
+                "run {index} {}: {:?}",
+                target.name,
+                target.findings
+            );
+        }
     }
 }

@@ -37,6 +37,50 @@ pub(crate) struct LegMemo {
     /// on which no risk can arise while ownship keeps `seen_mps`
     /// ([`no_risk_while_steady`]), found on a piece with no encounter.
     pub(super) clear: Vec<Option<u8>>,
+    /// Ownship's velocities on a course turned to and on the course before
+    /// it ([`LegMemo::turn_velocities`]), with the (course turned to, course
+    /// before, speed) they were worked out for, as bits.
+    turn_mps: Option<([u64; 3], (DVec2, DVec2))>,
+}
+
+impl LegMemo {
+    /// Ownship's velocity as `own` (on the course turned to) and on
+    /// `course_before_rad` at `own`'s speed ([`VesselState::velocity_mps`]),
+    /// the pair kept from the last call if worked out for the very same
+    /// courses and speed (the same bits): along a straight run every piece
+    /// asks the settled-turn predicate the same (decision 60).
+    pub(crate) fn turn_velocities(
+        &mut self,
+        course_before_rad: f64,
+        own: &VesselState,
+    ) -> (DVec2, DVec2) {
+        let key = [
+            own.course_rad.to_bits(),
+            course_before_rad.to_bits(),
+            own.speed_mps.to_bits(),
+        ];
+        match self.turn_mps {
+            Some((known, velocities)) if known == key => velocities,
+            _ => {
+                let before = VesselState {
+                    course_rad: course_before_rad,
+                    ..*own
+                };
+                let velocities = (own.velocity_mps(), before.velocity_mps());
+                self.turn_mps = Some((key, velocities));
+                velocities
+            }
+        }
+    }
+
+    /// Target `index`'s velocity, `target` its state ([`velocity_of`]: the
+    /// one the leg's latch step keeps, shared).
+    pub(crate) fn target_velocity(&mut self, index: usize, target: &VesselState) -> DVec2 {
+        if self.velocities.len() <= index {
+            self.velocities.resize(index + 1, None);
+        }
+        velocity_of(&mut self.velocities[index], target)
+    }
 }
 
 /// How near, m/s, the velocity sailed over a piece must be to the velocity

@@ -19,6 +19,7 @@
 //! same either way.
 
 use super::Planner;
+use super::clearances::{AcrossClearances, ClearanceMemo};
 use crate::config::PlannerConfig;
 use crate::constraint::Constraint;
 use crate::crossing::speed_on_course;
@@ -124,11 +125,16 @@ pub enum Probe {
 /// the order `probe` says, and returns what the highest rung that finds
 /// something found. With `preferred` false (a preferred clearance no wider
 /// than `d_th`) only the `d_th` rungs are asked.
+///
+/// `search` is also told whether a plan is already found whatever it finds
+/// (the `d_th` rung found one and the preferred clearance is asked to widen
+/// it: [`Probe::FloorFirst`]), so its refusals need not be kept
+/// (`clearances`, decision 59).
 fn climb<T>(
     ladder: &[Rung],
     probe: Probe,
     preferred: bool,
-    mut search: impl FnMut(Rung) -> Option<T>,
+    mut search: impl FnMut(Rung, bool) -> Option<T>,
 ) -> Option<T> {
     let mut shapes: Vec<ManeuverShape> = Vec::with_capacity(ladder.len());
     for rung in ladder {
@@ -139,22 +145,22 @@ fn climb<T>(
     shapes.into_iter().find_map(|shape| {
         let at = |clearance| Rung { shape, clearance };
         let has = |clearance| ladder.contains(&at(clearance));
-        let mut ask = |clearance| {
+        let mut ask = |clearance, found| {
             if has(clearance) {
-                search(at(clearance))
+                search(at(clearance), found)
             } else {
                 None
             }
         };
         if !preferred {
-            return ask(ClearanceLevel::Floor);
+            return ask(ClearanceLevel::Floor, false);
         }
         match probe {
             Probe::PreferredFirst => {
-                ask(ClearanceLevel::Preferred).or_else(|| ask(ClearanceLevel::Floor))
+                ask(ClearanceLevel::Preferred, false).or_else(|| ask(ClearanceLevel::Floor, false))
             }
-            Probe::FloorFirst => ask(ClearanceLevel::Floor)
-                .map(|floor| ask(ClearanceLevel::Preferred).unwrap_or(floor)),
+            Probe::FloorFirst => ask(ClearanceLevel::Floor, false)
+                .map(|floor| ask(ClearanceLevel::Preferred, true).unwrap_or(floor)),
         }
     })
 }
@@ -210,7 +216,9 @@ impl<C: Constraint> Planner<C> {
     /// the start through `points` (the goal alone, from the root), every
     /// leg the validity check refuses counted in `refused`. With
     /// `start_searched`, the manoeuvre search from the start is known to
-    /// fail ([`simplify_after`]).
+    /// fail ([`simplify_after`]). `shared` holds the verdicts of the other
+    /// rungs of the same search (`clearances`, decision 59), with whether a
+    /// plan is already found whatever this search finds.
     #[expect(
         clippy::too_many_arguments,
         reason = "one search of the ladder: the problem, where it sails, and the rung"
@@ -224,6 +232,7 @@ impl<C: Constraint> Planner<C> {
         shape: ManeuverShape,
         points: &[DVec2],
         start_searched: bool,
+        (shared, found): (&ClearanceMemo, bool),
         refused: &mut RejectionCounts,
     ) -> Option<Vec<SimplifiedLeg>> {
         let checker = SafetyChecker::new(
@@ -234,7 +243,18 @@ impl<C: Constraint> Planner<C> {
             problem.start_time_s,
         )
         .with_steady_course(problem.steady_course_rad)
+        .with_turning_at_start(problem.turning_at_start)
         .with_constraint(&self.constraint);
+        // A refusal carried to a wider clearance may name another cause
+        // than the check would: only where nothing refused is kept and no
+        // earlier search's verdicts are being replayed (their order).
+        let widening = found && !self.verdicts.borrow().replaying();
+        let checker = AcrossClearances {
+            validator: &checker,
+            memo: shared,
+            clearance_m: config.clearance_m,
+            widening,
+        };
         let checker = Replaying {
             validator: &checker,
             verdicts: &self.verdicts,
@@ -315,11 +335,13 @@ impl<C: Constraint> Planner<C> {
         } else {
             &ROOT_LADDER
         };
+        // The rungs' verdicts, shared between the two clearances.
+        let shared = ClearanceMemo::default();
         let legs = climb(
             ladder,
             probe,
             self.config.preferred_clearance_factor > 1.0,
-            |rung| {
+            |rung, found| {
                 let config = match rung.clearance {
                     ClearanceLevel::Preferred => &preferred,
                     ClearanceLevel::Floor => &self.config,
@@ -328,7 +350,15 @@ impl<C: Constraint> Planner<C> {
                     return None;
                 }
                 self.search_legs(
-                    problem, &sailing, model, config, rung.shape, &goal, false, refused,
+                    problem,
+                    &sailing,
+                    model,
+                    config,
+                    rung.shape,
+                    &goal,
+                    false,
+                    (&shared, found),
+                    refused,
                 )
                 .map(|legs| (rung.shape, legs))
             },
@@ -398,6 +428,7 @@ impl<C: Constraint> Planner<C> {
                     ManeuverShape::OneAlteration,
                     &points,
                     root_searched,
+                    (&ClearanceMemo::default(), false),
                     refused,
                 );
                 if sailing.expired.get() {
@@ -514,7 +545,7 @@ mod tests {
     /// records every rung it is asked.
     fn run(probe: Probe, preferred: bool, found: &[Rung]) -> (Option<Rung>, Vec<Rung>) {
         let mut asked = Vec::new();
-        let won = climb(&ROOT_LADDER, probe, preferred, |rung| {
+        let won = climb(&ROOT_LADDER, probe, preferred, |rung, _| {
             asked.push(rung);
             found.contains(&rung).then_some(rung)
         });

@@ -33,6 +33,7 @@ use vorrt_colregs::{EncounterLatch, update_latch};
 use vorrt_geometry::angle;
 use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, TargetState};
 
+mod clearances;
 mod extract;
 
 /// How often (in samples) the wall clock is read when a budget is set.
@@ -452,6 +453,7 @@ impl<C: Constraint> Planner<C> {
             problem.start_time_s,
         )
         .with_steady_course(problem.steady_course_rad)
+        .with_turning_at_start(problem.turning_at_start)
         .with_constraint(&self.constraint);
         let checker = Replaying {
             validator: &checker,

@@ -475,6 +475,24 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         self.finish()
     }
 
+    /// Whether ownship's course changed over the last step faster than a
+    /// course held wanders (`rules::STEADY_TURN_RATE_RAD_S`, the rate
+    /// `steady_course_rad` tells a turn by): it is turning now.
+    fn turning_now(&self) -> bool {
+        let (times_s, courses_rad) = (&self.record.times_s, &self.own_courses_rad);
+        match (
+            times_s.len().checked_sub(2),
+            courses_rad.len().checked_sub(2),
+        ) {
+            (Some(t), Some(c)) => {
+                let step_s = times_s[t + 1] - times_s[t];
+                let turned = vorrt_geometry::angle::signed_turn(courses_rad[c], courses_rad[c + 1]);
+                turned.abs() > vorrt_colregs::rules::STEADY_TURN_RATE_RAD_S * step_s + 1e-9
+            }
+            _ => false,
+        }
+    }
+
     /// Observes the present moment: the encounters move on from the true
     /// states, every vessel is recorded, and the run ends if ownship has
     /// arrived or the time is up.
@@ -511,6 +529,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
     /// Decides at the present moment whether to plan, and does: a trigger
     /// first asks whether the rest of the plan in force still holds.
     fn decide(&mut self) -> Decision {
+        let turning_at_start = self.turning_now();
         let setup = &mut self.setup;
         let (time_s, latches) = (self.time_s, &self.encounters.latches);
         // How ownship predicts the targets now (what it would plan with).
@@ -563,6 +582,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             encounters: latches.clone(),
             alterations: self.encounters.alterations.clone(),
             steady_course_rad: Some(self.steady_course_rad),
+            turning_at_start,
         };
         // The plan in force is kept while the planner's own validity check
         // still accepts the rest of it, as the targets are now predicted and

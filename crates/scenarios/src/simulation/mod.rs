@@ -21,7 +21,10 @@
 //! duties (directions only, then safety only: rules 2(b), 17(b)), each
 //! departure recorded; when even that fails, ownship keeps the plan in force
 //! if it still holds, else turns (at its rate of turn) onto the evasive course
-//! (`vorrt_planner::evasive_leg`). While ownship sails a fallback plan or
+//! (`vorrt_planner::evasive_leg`), unless no evasive course keeps the
+//! clearance or keeps clearly farther than the rest of the plan in force:
+//! then that plan is held as the manoeuvre under way
+//! (`vorrt_planner::holds_manoeuvre_in_force`, decision 56). While ownship sails a fallback plan or
 //! the evasive manoeuvre it tries again for a fully compliant plan after
 //! [`RETRY_AFTER_S`], or at once when the encounters in force change; a
 //! retry grows the planner's trees in the first, goal-biased phase only

@@ -7,7 +7,8 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
     Compliance, Constraint, EvasionSearch, EvasiveManeuver, Plan, PlanStatistics, Planner,
-    PlanningProblem, SearchEffort, Waypoint, evasive_leg_holding,
+    PlanningProblem, SearchEffort, Waypoint, evasive_leg_holding, holds_manoeuvre_in_force,
+    legs_min_distance,
 };
 
 use super::record::{PlanEvent, PlanTrigger};
@@ -378,7 +379,11 @@ pub(super) fn plan_if_sooner<C: Constraint>(
 /// After every level failed: keeps the plan in force if the planner's
 /// validity check still accepts the rest of it, or else puts the evasive
 /// manoeuvre in force (the one in force held unless another is clearly
-/// better); records the failed call.
+/// better); records the failed call. A plan in force that no longer passes
+/// the check is the manoeuvre under way, and is held against the evasive
+/// manoeuvre by the same judgement as an evasive one in force
+/// (`holds_manoeuvre_in_force`, decision 56): replaced only by a course that
+/// keeps the clearance or keeps clearly farther than the rest of the plan.
 fn fall_back<C: Constraint>(
     planners: &[Planner<C>],
     problem: &PlanningProblem,
@@ -389,14 +394,17 @@ fn fall_back<C: Constraint>(
     attempts: Attempts,
 ) {
     let time_s = problem.start_time_s;
-    let keep_plan = active.as_ref().is_some_and(|active| {
-        !active.evasive
-            && planners.first().is_some_and(|planner| {
-                planner
-                    .check_legs(problem, &remaining_legs(&active.plan, time_s))
-                    .is_ok()
-            })
+    // The rest of the plan in force, when it is a plan (not the evasive leg).
+    let in_force = active
+        .as_ref()
+        .filter(|active| !active.evasive)
+        .map(|active| remaining_legs(&active.plan, time_s));
+    let keep_plan = in_force.as_ref().is_some_and(|legs| {
+        planners
+            .first()
+            .is_some_and(|planner| planner.check_legs(problem, legs).is_ok())
     });
+    let mut held_plan = false;
     let evasion = if keep_plan {
         None
     } else {
@@ -421,16 +429,24 @@ fn fall_back<C: Constraint>(
                 holding,
             ),
         };
-        *active = Some(ActivePlan {
-            plan: leg_plan(leg, time_s),
-            predicted_at_s: time_s,
-            predicted: problem.targets.clone(),
-            anticipated: vec![Vec::new(); problem.targets.len()],
-            encounters_seen: false,
-            evasive: true,
-            evasion: Some(evasion),
+        held_plan = in_force.as_ref().is_some_and(|legs| {
+            let held_m = legs_min_distance(problem, legs, EVASION_HORIZON_S);
+            holds_manoeuvre_in_force(held_m, evasion.min_distance_m, call.clearance_m)
         });
-        Some(evasion)
+        if held_plan {
+            None
+        } else {
+            *active = Some(ActivePlan {
+                plan: leg_plan(leg, time_s),
+                predicted_at_s: time_s,
+                predicted: problem.targets.clone(),
+                anticipated: vec![Vec::new(); problem.targets.len()],
+                encounters_seen: false,
+                evasive: true,
+                evasion: Some(evasion),
+            });
+            Some(evasion)
+        }
     };
     plans.push(PlanEvent {
         time_s,
@@ -450,6 +466,11 @@ fn fall_back<C: Constraint>(
             Compliance::SafetyOnly
         },
     });
+    if held_plan && let Some(active) = active.as_mut() {
+        // Held, not re-checked: what it assumes is brought up to date, so
+        // the next trigger is judged against the present prediction.
+        active.kept(problem.targets.clone(), time_s, &problem.encounters);
+    }
 }
 
 /// A plan of one leg starting at `time_s` (the evasive manoeuvre).
@@ -574,113 +595,4 @@ fn return_moved(assumed_s: Option<f64>, now_s: Option<f64>) -> bool {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use vorrt_colregs::Encounter;
-
-    #[test]
-    fn a_return_foreseen_anew_or_moved_asks_again() {
-        assert!(!return_moved(None, None));
-        assert!(return_moved(None, Some(200.0)), "a return now foreseen");
-        assert!(return_moved(Some(20.0), None), "no longer foreseen");
-        assert!(!return_moved(Some(100.0), Some(100.0 + RETURN_MOVED_S)));
-        assert!(return_moved(
-            Some(100.0),
-            Some(100.0 + RETURN_MOVED_S + 5.0)
-        ));
-    }
-
-    fn latch(encounter: Encounter) -> EncounterLatch {
-        EncounterLatch {
-            encounter,
-            reference_course_rad: 0.0,
-            reference_speed_mps: 6.0,
-            latched_at_s: 0.0,
-            risk_distance_m: None,
-        }
-    }
-
-    #[test]
-    fn a_retry_is_due_after_the_wait_or_when_the_encounters_change() {
-        let mut retry = RetryTimer::idle();
-        let situation = vec![Some(latch(Encounter::HeadOn)), None];
-        assert!(!retry.due(1e9, &situation), "nothing failed yet");
-        retry.failed(100.0, &situation);
-        assert!(!retry.due(100.0 + RETRY_AFTER_S - 5.0, &situation));
-        assert!(retry.due(100.0 + RETRY_AFTER_S, &situation));
-        // An encounter released, or a new one latched: due at once.
-        assert!(retry.due(105.0, &[None, None]));
-        assert!(retry.due(
-            105.0,
-            &[
-                Some(latch(Encounter::HeadOn)),
-                Some(latch(Encounter::Overtaking))
-            ]
-        ));
-        retry.succeeded();
-        assert!(!retry.due(1e9, &[None, None]));
-    }
-
-    #[test]
-    fn a_fallback_level_that_would_repeat_the_failed_search_is_not_asked() {
-        use glam::DVec2;
-        use vorrt_planner::PlannerConfig;
-        // A vessel lies stopped on the goal, and no encounter is ever
-        // latched (MTD 1 m): every level refuses only for safety, so the
-        // weaker levels would draw the same samples and fail alike.
-        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
-        let goal_m = DVec2::new(0.0, 3000.0);
-        let blocker = TargetState::constant_velocity(VesselState::new(goal_m, 0.0, 0.0, 50.0));
-        let problem = PlanningProblem::new(own, goal_m, vec![blocker]);
-        let mut config = PlannerConfig {
-            nodes_per_phase: 40,
-            samples_per_phase: 40,
-            nodes_per_route_step: 0.0,
-            max_restarts: 1,
-            ..PlannerConfig::default()
-        };
-        config.rules.mtd_m = 1.0;
-        let mut planners: Vec<Planner> = [
-            Compliance::Full,
-            Compliance::Directions,
-            Compliance::SafetyOnly,
-        ]
-        .into_iter()
-        .map(|compliance| {
-            Planner::new(PlannerConfig {
-                compliance,
-                ..config
-            })
-            .expect("valid")
-        })
-        .collect();
-        let one_search = Planner::new(config)
-            .expect("valid")
-            .plan(&problem, 9)
-            .expect_err("blocked")
-            .statistics()
-            .expect("statistics")
-            .samples;
-        let (mut active, mut plans, mut retry) = (None, Vec::new(), RetryTimer::idle());
-        let model = OwnshipModel::Instant(vorrt_jfs::InstantTurn { max_turn_rad: 0.5 });
-        plan_now(
-            &mut planners,
-            &problem,
-            &model,
-            &PlanCall {
-                why: PlanTrigger::Initial,
-                seed: 9,
-                clearance_m: config.clearance_m,
-                speed_change_mps2: 0.01,
-            },
-            &mut active,
-            &mut plans,
-            &mut retry,
-        );
-        let event = plans.last().expect("one call");
-        assert!(!event.succeeded);
-        // One search drawn, not three.
-        assert_eq!(event.samples_drawn, one_search);
-        assert!(active.is_some_and(|active| active.evasive));
-    }
-}
+mod tests;

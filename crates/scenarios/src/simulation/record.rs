@@ -62,7 +62,8 @@ pub struct PlanEvent {
     #[serde(default)]
     pub speeds_mps: Vec<f64>,
     /// On failure, the evasive course ownship turned to, degrees (`None` when
-    /// it kept its previous plan, still safe).
+    /// it kept its previous plan: still valid, or held as the manoeuvre under
+    /// way, decision 56).
     pub evasive_course_deg: Option<f64>,
     /// On failure, the speed the evasive manoeuvre settles at, m/s: the
     /// service speed, half of it or 0 (stop); `None` as for the course.
