@@ -27,7 +27,8 @@
 //! factors),
 //! then the alterations to port. Where the leg to the goal would turn to
 //! port onto a vessel crossing from port (decision 28), a course astern of
-//! it is tried before the next, longer hold. The branch is what is left
+//! it, then a course part of the way back (decision 61), is tried before
+//! the next, longer hold. The branch is what is left
 //! when no such manoeuvre is valid, as among several vessels.
 //!
 //! From the planner's root, before any tree, where no single alteration
@@ -385,7 +386,10 @@ const ASTERN_HOLD_M: [f64; 3] = [1000.0, 2000.0, 4000.0];
 /// ([`ManeuverViolation::PortTurnTowardVessel`](vorrt_colregs::ManeuverViolation::PortTurnTowardVessel):
 /// rules 2(a), 8(a), 17(c)), a course further to port held to pass astern
 /// of it ([`ASTERN_DEG`], [`ASTERN_HOLD_M`], smallest first), then the leg
-/// to the goal. A longer hold of the alteration is the caller's next try.
+/// to the goal; where none is valid, a course part of the way back, short
+/// of the goal's bearing ([`SHORT_OF_DEG`], [`SHORT_OF_HOLD_M`]), then the
+/// leg to the goal. A longer hold of the alteration is the caller's next
+/// try.
 pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
@@ -419,20 +423,54 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
     }
     let pose = hold.leg.end_pose();
     let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
-    for offset_deg in ASTERN_DEG {
-        let course_rad = angle::normalize_2pi(goal_course_rad - offset_deg.to_radians());
-        for hold_m in ASTERN_HOLD_M {
-            let astern = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
-            let Ok(astern) = sail(hold, astern) else {
+    let astern = ASTERN_DEG.map(|deg| (-deg, ASTERN_HOLD_M));
+    let short_of = SHORT_OF_DEG.map(|deg| (deg, SHORT_OF_HOLD_M));
+    // Part of the way back only once every vessel given way to is past and
+    // clear (a smaller turn while one is in force is a small alteration in
+    // its encounter, rule 8(b)), and from a hold at service speed: turning
+    // while speeding up again, the course over ground an observer measures
+    // swings on after the settled course the validator judges (open sea, 2
+    // constant targets, run 244: a vessel from port latched part way
+    // round, `port_turn_toward_vessel`).
+    let at_service = hold.leg.end_speed_mps() >= speeds.service_mps;
+    let short_of = short_of
+        .into_iter()
+        .filter(|_| at_service && past_and_clear(&hold.state));
+    for (offset_deg, holds_m) in astern.into_iter().chain(short_of) {
+        let course_rad = angle::normalize_2pi(goal_course_rad + offset_deg.to_radians());
+        if offset_deg > 0.0
+            && angle::normalize_pi(course_rad - pose.course_rad) >= -SHORT_OF_DEG[0].to_radians()
+        {
+            // Not a port turn toward the goal of at least the smallest
+            // offset: nothing short of the goal's bearing to try.
+            continue;
+        }
+        for hold_m in holds_m {
+            let part = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
+            let Ok(part) = sail(hold, part) else {
                 continue;
             };
-            if let Some(back) = to_goal(&astern).and_then(|leg| sail(&astern, leg).ok()) {
-                return Some(vec![astern, back]);
+            if let Some(back) = to_goal(&part).and_then(|leg| sail(&part, leg).ok()) {
+                return Some(vec![part, back]);
             }
         }
     }
     None
 }
+
+/// The courses to starboard of the goal's bearing that a return refused
+/// for turning to port onto a vessel tries where no course astern of it
+/// ([`ASTERN_DEG`]) is valid, degrees: part of the way back, a port turn
+/// smaller than the one refused that makes no vessel a risk, held while the
+/// other vessel crosses ahead (decision 61).
+const SHORT_OF_DEG: [f64; 2] = [15.0, 25.0];
+
+/// How far a course short of the goal's bearing ([`SHORT_OF_DEG`]) is held
+/// before the leg to the goal, metres, shortest first: 2 km (about 5
+/// minutes at 13 kn) or more, so that an observer judging the course over
+/// ground sees two port turns and not one (decision 55's run 116: a course
+/// held 819 m between two port turns was seen as one of 56°).
+const SHORT_OF_HOLD_M: [f64; 3] = [2000.0, 4000.0, 6000.0];
 
 /// The manoeuvres of two alterations, tried where one alteration held
 /// cannot be sailed: from `start` with `state` in force, a first course

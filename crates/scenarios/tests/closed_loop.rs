@@ -295,7 +295,8 @@ fn two_alterations_are_planned_where_one_cannot_be_sailed() {
     // 35° to port onto the course held before, which brought TS2, crossing
     // from port, onto a collision course (passed 380 m off, ownship
     // astern); it is refused now, and after three retries in 45 s two
-    // alterations keep every rule, with no tree (TS2 passed 1.5 km off).
+    // alterations keep every rule, with no tree (TS2 passed 1.5 km off;
+    // 744 m since the return comes back part of the way, decision 61).
     let scenario = fixture("imazu/imazu_17.ron");
     let record = simulate(&scenario, 1).expect("valid settings");
     let full = record
@@ -305,11 +306,23 @@ fn two_alterations_are_planned_where_one_cannot_be_sailed() {
         .expect("a plan that keeps every rule");
     assert!(full.time_s <= 60.0, "found at {} s", full.time_s);
     assert_eq!(full.samples_drawn, 0, "found by the manoeuvre search");
-    assert_eq!(full.waypoints.len(), 4, "three legs");
+    // Three legs, or four where the return comes back part of the way
+    // first (decision 61).
+    assert!(
+        (4..=5).contains(&full.waypoints.len()),
+        "{} waypoints",
+        full.waypoints.len()
+    );
     let evaluation = evaluate(&scenario, &record);
     assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
     assert!(evaluation.compliant, "{:?}", evaluation.targets);
-    assert!(evaluation.targets[1].min_distance_m > 1000.0);
+    // TS2, crossing from port, is never brought onto a collision course:
+    // passed wide of the preferred clearance (2 d_th).
+    assert!(
+        evaluation.targets[1].min_distance_m > 600.0,
+        "{} m",
+        evaluation.targets[1].min_distance_m
+    );
 }
 
 #[test]

@@ -208,3 +208,78 @@ fn the_return_in_a_crossing_begins_once_the_vessel_is_past_and_clear() {
     );
     assert!(legs.last().expect("legs").leg.end_m().distance(goal_m) < 1e-6);
 }
+
+/// Refuses, from `hold_end_m`, the leg to the goal as a port turn onto a
+/// vessel and every course to port of the goal's bearing; accepts every
+/// other leg (decision 61).
+struct PortVesselOnTheReturn {
+    hold_end_m: DVec2,
+    goal_m: DVec2,
+}
+
+impl MotionValidator for PortVesselOnTheReturn {
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        if leg.start_m.distance(self.hold_end_m) > 1e-6 {
+            return Ok(());
+        }
+        let goal_course_rad = angle::unit_to_course(self.goal_m - self.hold_end_m);
+        let off_rad = angle::normalize_pi(leg.course_rad - goal_course_rad);
+        if leg.end_m().distance(self.goal_m) < 1e-6 {
+            Err(RejectionCause::Colregs(
+                ManeuverViolation::PortTurnTowardVessel,
+            ))
+        } else if off_rad < 0.0 {
+            Err(RejectionCause::Clearance)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Where the leg to the goal is refused for turning to port onto a vessel
+/// and no course astern of it is valid, the return comes back part of the
+/// way: a course short of the goal's bearing, held 2 km, then the goal
+/// (without it, no return: a longer hold of the alteration was the only
+/// way, decision 61).
+#[test]
+fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let goal_m = DVec2::new(0.0, 12_000.0);
+    let course_rad = 45f64.to_radians();
+    let hold = model.turn_onto(
+        Pose {
+            position_m: DVec2::ZERO,
+            course_rad,
+        },
+        course_rad,
+        6.0,
+        2000.0,
+    );
+    let validator = PortVesselOnTheReturn {
+        hold_end_m: hold.end_m(),
+        goal_m,
+    };
+    let hold = SimplifiedLeg {
+        end_elapsed_s: hold.duration_s(),
+        leg: hold,
+        state: EncounterState::default(),
+    };
+    let back = return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m)
+        .expect("a return part of the way");
+    assert_eq!(back.len(), 2);
+    let goal_course_rad = angle::unit_to_course(goal_m - hold.leg.end_m());
+    let short_of_deg = angle::normalize_pi(back[0].leg.course_rad - goal_course_rad).to_degrees();
+    assert!(
+        (short_of_deg - SHORT_OF_DEG[0]).abs() < 1e-6,
+        "{short_of_deg}"
+    );
+    assert!((back[0].leg.straight_m - SHORT_OF_HOLD_M[0]).abs() < 1e-6);
+    assert!(back[1].leg.end_m().distance(goal_m) < 1e-6);
+}
