@@ -444,6 +444,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         // against the course a window before it arose: two windows.
         let settled_until_s =
             start_elapsed_s + leg.turn_duration_s() + 2.0 * STEADY_COURSE_WINDOW_S;
+        let in_window = |c: &Move| c.start_elapsed_s - c.duration_s <= settled_until_s;
         // Each target's velocity, reused along the leg while its course and
         // speed stay the same, and the targets no risk can reach while the
         // velocities hold (decision 54).
@@ -482,12 +483,13 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 // brought onto a collision course by a course the swing
                 // passes through is latched there by the evaluation (its
                 // course over ground part way round), and a vessel that
-                // acts answers it (decision 51).
-                if piece.turning {
+                // acts answers it (decision 51); so is gathering way after it,
+                // short of the speed settled on (decision 62).
+                if piece.turning || in_window(&candidate) {
                     check_turn(&candidate, &mut memo)?;
                 }
             } else {
-                if candidate.start_elapsed_s - candidate.duration_s <= settled_until_s {
+                if in_window(&candidate) {
                     // The course the leg's turn settles on, judged against
                     // every vessel while an observer still sees the turn
                     // (decision 28), on every piece that starts within the

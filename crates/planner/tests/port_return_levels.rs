@@ -96,3 +96,52 @@ fn a_plan_made_part_way_round_is_judged_from_the_course_before() {
     turning.turning_at_start = true;
     assert!(!refused_as_port_return(&PlannerConfig::default(), &turning));
 }
+
+/// Decision 62: a return from a reduced-speed hold gathers way on the new
+/// course after the turn, and a vessel from port may be a risk at a speed
+/// short of the settled one. Ownship on 035 at 3 m/s comes back to 000 and
+/// speeds up to 7 m/s (0.02 m/s², 200 s); a vessel 4.7 nm off the port bow
+/// heads east at 6 m/s. Sailed at 7 m/s from the start the return passes
+/// clear of the risk CPA; gathering way it comes within it, and the
+/// evaluation latches the vessel as one the turn made a risk (open sea, 8
+/// COLREGs-obeying targets, seed 11, runs 216 and 716).
+#[test]
+fn a_return_that_gathers_way_is_judged_at_every_speed_on_the_way() {
+    const SLOW_MPS: f64 = 3.0;
+    const FAST_MPS: f64 = 7.0;
+    let config = PlannerConfig::default();
+    let problem_at = |speed_mps: f64| {
+        let own = VesselState::new(DVec2::ZERO, 35f64.to_radians(), speed_mps, 100.0);
+        let crossing = VesselState::new(
+            DVec2::new(-8750.0, 3000.0),
+            90f64.to_radians(),
+            SPEED_MPS,
+            100.0,
+        );
+        let mut problem = PlanningProblem::new(
+            own,
+            DVec2::new(0.0, 30_000.0),
+            vec![TargetState::constant_velocity(crossing)],
+        );
+        problem.steady_course_rad = Some(35f64.to_radians());
+        problem
+    };
+    let from = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 35f64.to_radians(),
+    };
+    let steady = Leg::turning_onto(from, 0.0, 0.0, FAST_MPS, 6_000.0);
+    let at_speed = check_legs(&config, &problem_at(FAST_MPS), &[steady]);
+    assert_eq!(at_speed, Ok(()), "{at_speed:?}");
+    let gathering = check_legs(
+        &config,
+        &problem_at(SLOW_MPS),
+        &[steady.from_speed(SLOW_MPS, 0.02)],
+    );
+    assert_eq!(
+        gathering,
+        Err(RejectionCause::Colregs(
+            ManeuverViolation::PortTurnTowardVessel
+        ))
+    );
+}

@@ -93,3 +93,39 @@ fn runs_111_185_799_make_no_port_return() {
         }
     }
 }
+
+/// Decision 62: the port returns of open-sea runs 216 and 716 (8
+/// COLREGs-obeying targets, seed 11). Each came back to port toward the
+/// goal from a reduced-speed hold and gathered way on the new course after
+/// the turn; at a speed short of the settled one a vessel crossing from
+/// port came within the risk CPA (run 716: TS5 1832 m at 13.0 kn, 1859 m
+/// at the settled 13.9 kn, against 1852 m), which the evaluation latched
+/// as a collision course made by the turn. The planner judged the port
+/// turn on the turn's pieces and on the settled course, not on the speed
+/// change in between.
+#[test]
+fn runs_216_716_gather_way_after_a_return_with_no_port_turn_onto_a_vessel() {
+    for (index, seed) in [
+        (216, 14_065_846_198_114_634_513),
+        (716, 16_674_634_050_676_809_714),
+    ] {
+        let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+        let record = simulate(&scenario, seed).expect("valid settings");
+        let evaluation = evaluate(&scenario, &record);
+        assert!(!evaluation.collision, "run {index}");
+        assert!(evaluation.clearance_kept, "run {index}");
+        assert!(evaluation.reached_goal, "run {index}");
+        for target in &evaluation.targets {
+            assert!(
+                !target
+                    .findings
+                    .iter()
+                    .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
+                "run {index} {}: {:?}",
+                target.name,
+                target.findings
+            );
+        }
+    }
+}
