@@ -17,13 +17,18 @@ use vorrt_planner::{Compliance, PlannerConfig, PlanningProblem, RejectionCause};
 const SPEED_MPS: f64 = 6.0;
 
 fn problem(steady_course_deg: f64) -> PlanningProblem {
-    let own = VesselState::new(DVec2::ZERO, 35f64.to_radians(), SPEED_MPS, 100.0);
-    let crossing = VesselState::new(
-        DVec2::new(-4000.0, 3300.0),
-        90f64.to_radians(),
-        SPEED_MPS,
-        100.0,
-    );
+    crossing_problem(SPEED_MPS, DVec2::new(-4000.0, 3300.0), steady_course_deg)
+}
+
+/// Ownship on 035 at `own_speed_mps`, its steady course `steady_course_deg`,
+/// bound north; one vessel at `crossing_m` heading east at [`SPEED_MPS`].
+fn crossing_problem(
+    own_speed_mps: f64,
+    crossing_m: DVec2,
+    steady_course_deg: f64,
+) -> PlanningProblem {
+    let own = VesselState::new(DVec2::ZERO, 35f64.to_radians(), own_speed_mps, 100.0);
+    let crossing = VesselState::new(crossing_m, 90f64.to_radians(), SPEED_MPS, 100.0);
     let mut problem = PlanningProblem::new(
         own,
         DVec2::new(0.0, 20_000.0),
@@ -110,22 +115,8 @@ fn a_return_that_gathers_way_is_judged_at_every_speed_on_the_way() {
     const SLOW_MPS: f64 = 3.0;
     const FAST_MPS: f64 = 7.0;
     let config = PlannerConfig::default();
-    let problem_at = |speed_mps: f64| {
-        let own = VesselState::new(DVec2::ZERO, 35f64.to_radians(), speed_mps, 100.0);
-        let crossing = VesselState::new(
-            DVec2::new(-8750.0, 3000.0),
-            90f64.to_radians(),
-            SPEED_MPS,
-            100.0,
-        );
-        let mut problem = PlanningProblem::new(
-            own,
-            DVec2::new(0.0, 30_000.0),
-            vec![TargetState::constant_velocity(crossing)],
-        );
-        problem.steady_course_rad = Some(35f64.to_radians());
-        problem
-    };
+    let problem_at =
+        |speed_mps: f64| crossing_problem(speed_mps, DVec2::new(-8750.0, 3000.0), 35.0);
     let from = Pose {
         position_m: DVec2::ZERO,
         course_rad: 35f64.to_radians(),

@@ -68,12 +68,27 @@ fn run_19_makes_no_port_return_onto_the_vessel_from_port() {
 /// comes within MTD.
 #[test]
 fn runs_111_185_799_make_no_port_return() {
-    for (index, seed) in [
-        (111, 4_654_229_725_192_512_665),
-        (185, 3_055_319_314_347_863_655),
-        (799, 7_774_615_476_898_146_628),
-    ] {
-        let spec = OpenSeaSpec::with_targets(2).with_behaviour(TargetBehaviour::Constant);
+    safe_at_the_goal_with_no_port_return(
+        2,
+        TargetBehaviour::Constant,
+        &[
+            (111, 4_654_229_725_192_512_665),
+            (185, 3_055_319_314_347_863_655),
+            (799, 7_774_615_476_898_146_628),
+        ],
+    );
+}
+
+/// Runs `(index, seed)` of the open-sea campaign (seed 11) with `targets`
+/// targets of `behaviour`: each reaches its goal with no collision, `d_th`
+/// kept and no `port_turn_toward_vessel` finding.
+fn safe_at_the_goal_with_no_port_return(
+    targets: usize,
+    behaviour: TargetBehaviour,
+    runs: &[(u64, u64)],
+) {
+    for &(index, seed) in runs {
+        let spec = OpenSeaSpec::with_targets(targets).with_behaviour(behaviour);
         let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
         let record = simulate(&scenario, seed).expect("valid settings");
         let evaluation = evaluate(&scenario, &record);
@@ -105,27 +120,12 @@ fn runs_111_185_799_make_no_port_return() {
 /// change in between.
 #[test]
 fn runs_216_716_gather_way_after_a_return_with_no_port_turn_onto_a_vessel() {
-    for (index, seed) in [
-        (216, 14_065_846_198_114_634_513),
-        (716, 16_674_634_050_676_809_714),
-    ] {
-        let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
-        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
-        let record = simulate(&scenario, seed).expect("valid settings");
-        let evaluation = evaluate(&scenario, &record);
-        assert!(!evaluation.collision, "run {index}");
-        assert!(evaluation.clearance_kept, "run {index}");
-        assert!(evaluation.reached_goal, "run {index}");
-        for target in &evaluation.targets {
-            assert!(
-                !target
-                    .findings
-                    .iter()
-                    .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
-                "run {index} {}: {:?}",
-                target.name,
-                target.findings
-            );
-        }
-    }
+    safe_at_the_goal_with_no_port_return(
+        8,
+        TargetBehaviour::Colregs,
+        &[
+            (216, 14_065_846_198_114_634_513),
+            (716, 16_674_634_050_676_809_714),
+        ],
+    );
 }
