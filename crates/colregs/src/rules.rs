@@ -150,21 +150,60 @@ pub const STEADY_TURN_RATE_RAD_S: f64 = 0.05 * std::f64::consts::PI / 180.0;
 #[must_use]
 pub fn steady_course_rad(times_s: &[f64], courses_rad: &[f64], look_back_s: f64) -> Option<f64> {
     let count = times_s.len().min(courses_rad.len());
-    let now_s = *times_s.get(count.checked_sub(1)?)?;
-    let mut index = count - 1;
-    while index > 0 && times_s[index - 1] >= now_s - look_back_s {
+    steady_course_rad_of(
+        count,
+        |index| times_s[index],
+        |index| courses_rad[index],
+        look_back_s,
+    )
+}
+
+/// [`steady_course_rad`] over a history of `count` samples given by index
+/// (0 the oldest, `count - 1` now): `time_s(index)` ascending, and
+/// `course_rad(index)`, asked only for the samples the search reaches, each
+/// once, newest first. For a history worked out on demand (the planner's
+/// courses over ground along a leg, decision 62), where most searches stop
+/// a step or two back; the same verdict as on the slices.
+///
+/// ```
+/// use vorrt_colregs::rules::{steady_course_rad, steady_course_rad_of};
+/// // A turn from 0 to 0.3 rad between 10 s and 20 s, the course held since.
+/// let times = [0.0, 10.0, 20.0, 30.0, 40.0];
+/// let courses = [0.0, 0.0, 0.3, 0.3, 0.3];
+/// let mut asked = Vec::new();
+/// let before = steady_course_rad_of(5, |i| times[i], |i| { asked.push(i); courses[i] }, 0.0);
+/// assert_eq!(before, steady_course_rad(&times, &courses, 0.0));
+/// assert_eq!(before, Some(0.3));
+/// // Steady at once: the two newest courses only.
+/// assert_eq!(asked, [4, 3]);
+/// // Looking back 25 s, into the turn: back to the course before it.
+/// assert_eq!(steady_course_rad_of(5, |i| times[i], |i| courses[i], 25.0), Some(0.0));
+/// ```
+#[must_use]
+pub fn steady_course_rad_of(
+    count: usize,
+    time_s: impl Fn(usize) -> f64,
+    mut course_rad: impl FnMut(usize) -> f64,
+    look_back_s: f64,
+) -> Option<f64> {
+    let mut index = count.checked_sub(1)?;
+    let now_s = time_s(index);
+    while index > 0 && time_s(index - 1) >= now_s - look_back_s {
         index -= 1;
     }
-    let search_from_s = times_s[index] - STEADY_TURN_SEARCH_S;
-    while index > 0 && times_s[index - 1] >= search_from_s {
-        let step_s = times_s[index] - times_s[index - 1];
-        let turned = angle::signed_turn(courses_rad[index - 1], courses_rad[index]).abs();
+    let search_from_s = time_s(index) - STEADY_TURN_SEARCH_S;
+    let mut course_now_rad = course_rad(index);
+    while index > 0 && time_s(index - 1) >= search_from_s {
+        let step_s = time_s(index) - time_s(index - 1);
+        let course_back_rad = course_rad(index - 1);
+        let turned = angle::signed_turn(course_back_rad, course_now_rad).abs();
         if turned <= STEADY_TURN_RATE_RAD_S * step_s + 1e-9 {
             break;
         }
         index -= 1;
+        course_now_rad = course_back_rad;
     }
-    Some(courses_rad[index])
+    Some(course_now_rad)
 }
 
 /// How far back [`steady_course_rad`] looks for the start of a turn under

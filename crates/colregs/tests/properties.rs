@@ -400,3 +400,61 @@ proptest! {
         }
     }
 }
+
+/// The steady-course search as first written over slices (before decision
+/// 62), kept as the oracle of the search by index.
+fn steady_course_over_slices(times_s: &[f64], courses_rad: &[f64], look_back_s: f64) -> f64 {
+    use vorrt_colregs::rules::{STEADY_TURN_RATE_RAD_S, STEADY_TURN_SEARCH_S};
+    let now_s = times_s[times_s.len() - 1];
+    let mut index = times_s.len() - 1;
+    while index > 0 && times_s[index - 1] >= now_s - look_back_s {
+        index -= 1;
+    }
+    let search_from_s = times_s[index] - STEADY_TURN_SEARCH_S;
+    while index > 0 && times_s[index - 1] >= search_from_s {
+        let step_s = times_s[index] - times_s[index - 1];
+        let turned = angle::signed_turn(courses_rad[index - 1], courses_rad[index]).abs();
+        if turned <= STEADY_TURN_RATE_RAD_S * step_s + 1e-9 {
+            break;
+        }
+        index -= 1;
+    }
+    courses_rad[index]
+}
+
+proptest! {
+    /// The steady course over a history given by index, and over slices,
+    /// is the search as first written, and asks no course twice (decision
+    /// 62).
+    #[test]
+    fn the_steady_course_by_index_is_the_one_over_slices(
+        steps in proptest::collection::vec((1.0f64..20.0, -0.05f64..0.05, 0u8..4), 1..80),
+        look_back_s in 0.0f64..120.0,
+    ) {
+        use vorrt_colregs::rules::{steady_course_rad, steady_course_rad_of};
+        let mut times_s = vec![0.0];
+        let mut courses_rad = vec![1.0];
+        for (step_s, turn_rad, held) in steps {
+            times_s.push(times_s.last().copied().unwrap_or(0.0) + step_s);
+            // Some steps hold the course exactly, as a steered course does.
+            let turn = if held == 0 { 0.0 } else { turn_rad * step_s };
+            courses_rad.push(courses_rad.last().copied().unwrap_or(0.0) + turn);
+        }
+        let mut asked = Vec::new();
+        let by_index = steady_course_rad_of(
+            times_s.len(),
+            |i| times_s[i],
+            |i| {
+                asked.push(i);
+                courses_rad[i]
+            },
+            look_back_s,
+        );
+        let oracle = steady_course_over_slices(&times_s, &courses_rad, look_back_s);
+        prop_assert_eq!(by_index, Some(oracle));
+        prop_assert_eq!(steady_course_rad(&times_s, &courses_rad, look_back_s), Some(oracle));
+        let mut unique = asked.clone();
+        unique.dedup();
+        prop_assert_eq!(unique, asked);
+    }
+}

@@ -5,16 +5,16 @@
 //! on the observed states at the latch: ownship's course over ground over
 //! the last observation window (the chord of the last minute, a heading
 //! about half a window old in a turn), and the course before found by
-//! [`steady_course_rad`] on those courses over ground, which looks back a
+//! [`steady_course_rad`](vorrt_colregs::rules::steady_course_rad) on those courses over ground, which looks back a
 //! window and then at most [`STEADY_TURN_SEARCH_S`] through a turn. In a
 //! long port turn (more than 120° at 0.5°/s) that search ends part way
 //! round, and the lagging course over ground is still swinging when a
 //! vessel comes within MTD: the steered course the planner checks is then
 //! not the course judged. This works out the judged pair from the leg
-//! itself, with the same [`steady_course_rad`].
+//! itself, with the same [`steady_course_rad`](vorrt_colregs::rules::steady_course_rad).
 
 use glam::DVec2;
-use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, STEADY_TURN_SEARCH_S, steady_course_rad};
+use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, STEADY_TURN_SEARCH_S, steady_course_rad_of};
 use vorrt_geometry::angle;
 use vorrt_jfs::Leg;
 
@@ -47,7 +47,7 @@ fn course_over_ground_rad(leg: &Leg, elapsed_s: f64) -> f64 {
 /// What an observer of `leg`'s track sees `elapsed_s` after its start:
 /// ownship's course over ground then, and, once the turn search can no
 /// longer reach back to the leg's start, the course it held before any
-/// turn ([`steady_course_rad`] on the courses over ground sampled every
+/// turn ([`steady_course_rad`](vorrt_colregs::rules::steady_course_rad) on the courses over ground sampled every
 /// [`OBSERVED_STEP_S`] back over a window and the turn search), radians.
 /// Before that the course before is the leg's start course (the course
 /// held before it), which the caller judges from already.
@@ -61,28 +61,28 @@ pub(crate) fn observed_turn_rad(leg: &Leg, elapsed_s: f64) -> (f64, Option<f64>)
     if elapsed_s <= span_s - STEADY_COURSE_WINDOW_S {
         return (now_rad, None);
     }
-    // Samples back to the furthest the steady course looks, oldest first.
+    // Samples back to the furthest the steady course looks, oldest first,
+    // each course over ground worked out only if the search reaches it
+    // (most stop a step back, on a course held: decision 62).
     #[expect(
         clippy::cast_possible_truncation,
         clippy::cast_sign_loss,
         reason = "a small positive count of steps"
     )]
     let steps = (span_s / OBSERVED_STEP_S).ceil() as usize;
-    let times_s: Vec<f64> = (0..=steps)
-        .rev()
-        .map(|step| {
-            #[expect(clippy::cast_precision_loss, reason = "a small count of steps")]
-            let back_s = step as f64 * OBSERVED_STEP_S;
-            elapsed_s - back_s
-        })
-        .collect();
-    let courses_rad: Vec<f64> = times_s
-        .iter()
-        .map(|&time_s| course_over_ground_rad(leg, time_s))
-        .collect();
+    let time_s = |index: usize| {
+        #[expect(clippy::cast_precision_loss, reason = "a small count of steps")]
+        let back_s = (steps - index) as f64 * OBSERVED_STEP_S;
+        elapsed_s - back_s
+    };
     // Courses over ground already carry the window's lag; the judge still
     // looks back a window on them (`judge_turn_into_encounter`).
-    let before_rad = steady_course_rad(&times_s, &courses_rad, STEADY_COURSE_WINDOW_S);
+    let before_rad = steady_course_rad_of(
+        steps + 1,
+        time_s,
+        |index| course_over_ground_rad(leg, time_s(index)),
+        STEADY_COURSE_WINDOW_S,
+    );
     (now_rad, before_rad)
 }
 
