@@ -254,6 +254,7 @@ impl PlanEventReport {
             PlanTrigger::PredictionChanged { .. } => "prediction_changed",
             PlanTrigger::Retry => "retry",
             PlanTrigger::PastAndClear => "past_and_clear",
+            PlanTrigger::LateArrival => "late_arrival",
         };
         Self {
             time_s: event.time_s,

@@ -227,3 +227,36 @@ fn sixteen_acting_vessels_of_run_300_are_kept_clear_of() {
         evaluation.min_distance_m
     );
 }
+
+/// Decision 63: runs 552 and 709 of the campaign with 16 COLREGs-obeying
+/// targets (seed 11) ran out of time. Each sailed a plan that would reach
+/// the goal only after the run's end (run 552: 80° to starboard at 45 % of
+/// the service speed, held almost an hour, planned at 30 s), while stand-on
+/// encounters stayed in force alongside, so the past-and-clear question
+/// (decision 52) was never asked. Ownship now asks for a sooner plan while
+/// the plan in force arrives too late, and reaches the goal.
+#[test]
+fn a_plan_that_would_arrive_after_the_run_ends_is_replaced() {
+    let spec = OpenSeaSpec::with_targets(16).with_behaviour(TargetBehaviour::Colregs);
+    for index in [552, 709] {
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+        let seed = scenario
+            .seed
+            .expect("a generated scenario carries its seed");
+        let record = simulate(&scenario, seed).expect("valid settings");
+        let evaluation = evaluate(&scenario, &record);
+        assert!(evaluation.reached_goal, "run {index}");
+        assert!(
+            !evaluation.collision && evaluation.clearance_kept,
+            "run {index}"
+        );
+        assert!(
+            record
+                .triggers()
+                .iter()
+                .any(|(_, trigger)| *trigger == PlanTrigger::LateArrival),
+            "run {index}: {:?}",
+            record.triggers()
+        );
+    }
+}

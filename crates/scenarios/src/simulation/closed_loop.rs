@@ -4,8 +4,8 @@
 //! steps, and take its record when done.
 
 use super::planning::{
-    ActivePlan, PlanCall, RetryTimer, follow, past_and_clear_due, plan_if_sooner, plan_now,
-    remaining_legs, replan_trigger,
+    ActivePlan, PlanCall, RetryTimer, follow, late_arrival_due, past_and_clear_due, plan_if_sooner,
+    plan_now, remaining_legs, replan_trigger,
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::recorded::RecordedMotion;
@@ -186,6 +186,9 @@ pub struct ClosedLoop<C = SchemeConstraint> {
     active: Option<ActivePlan>,
     /// A reason to plan at the next decision already known (the first plan).
     pending: Option<PlanTrigger>,
+    /// When ownship last asked for a sooner plan as the plan in force
+    /// arrived too late ([`PlanTrigger::LateArrival`]), seconds.
+    late_asked_s: f64,
     retry: RetryTimer,
     status: RunStatus,
     record: SimulationRecord,
@@ -375,6 +378,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             own_courses_rad: Vec::new(),
             active: None,
             pending: Some(PlanTrigger::Initial),
+            late_asked_s: f64::NEG_INFINITY,
             retry: RetryTimer::idle(),
             status: RunStatus::Running,
             record,
@@ -570,6 +574,17 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         {
             self.pending = Some(PlanTrigger::PastAndClear);
         }
+        if self.pending.is_none()
+            && late_arrival_due(
+                self.active.as_ref(),
+                &self.retry,
+                (time_s, self.late_asked_s),
+                setup.max_duration_s,
+            )
+        {
+            self.late_asked_s = time_s;
+            self.pending = Some(PlanTrigger::LateArrival);
+        }
         let Some(why) = self.pending.take() else {
             return Decision::SailedOn;
         };
@@ -595,7 +610,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             clearance_m: setup.config.clearance_m,
             speed_change_mps2: setup.speed_change_mps2,
         };
-        if why == PlanTrigger::PastAndClear {
+        if matches!(why, PlanTrigger::PastAndClear | PlanTrigger::LateArrival) {
             return self.ask_for_a_sooner_plan(&problem, &call);
         }
         let still_valid = why != PlanTrigger::Retry
@@ -641,7 +656,11 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         ) {
             return Decision::Planned(call.why);
         }
-        if let Some(active) = self.active.as_mut() {
+        // Past and clear is asked once per release of every encounter; a
+        // late arrival again after `LATE_ARRIVAL_ASK_S`.
+        if call.why == PlanTrigger::PastAndClear
+            && let Some(active) = self.active.as_mut()
+        {
             active.encounters_seen = false;
         }
         self.record.plans_kept.push(PlanCheck {

@@ -54,8 +54,8 @@ pub use closed_loop::{
 };
 pub use commanded::{COMMANDED_GOAL_TOLERANCE_M, CommandError, CommandedRun};
 pub use planning::{
-    EVASION_COURSES, EVASION_HORIZON_S, PAST_AND_CLEAR_GAIN_S, REFERENCE_MATCH_RAD, RETRY_AFTER_S,
-    RETURN_MOVED_S,
+    EVASION_COURSES, EVASION_HORIZON_S, LATE_ARRIVAL_ASK_S, PAST_AND_CLEAR_GAIN_S,
+    REFERENCE_MATCH_RAD, RETRY_AFTER_S, RETURN_MOVED_S,
 };
 pub use record::{PlanCheck, PlanEvent, PlanTrigger, SimulationRecord, call_seed};
 pub use recorded::{RecordedMotion, RecordedMotionError, TimedState};

@@ -37,6 +37,10 @@ pub enum PlanTrigger {
     /// vessel is past and clear, not longer). A plan found is put in force
     /// only where it reaches the goal sooner (decision 52).
     PastAndClear,
+    /// The plan in force would reach the goal only after the run ends:
+    /// ownship asks for one that arrives sooner, put in force only where it
+    /// does (decision 63).
+    LateArrival,
 }
 
 /// One call of the planner during a run.
