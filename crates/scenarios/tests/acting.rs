@@ -172,20 +172,28 @@ fn a_vessel_that_gives_way_and_swings_back_does_not_make_ownship_replan_every_st
 /// kept to reaching the goal safely (the trigger itself wants a new run).
 #[test]
 fn once_past_and_clear_a_long_hold_is_cut_short() {
-    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
     for index in [891, 64] {
-        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
-        let seed = scenario
-            .seed
-            .expect("a generated scenario carries its seed");
-        let record = simulate(&scenario, seed).expect("valid settings");
-        let evaluation = evaluate(&scenario, &record);
-        assert!(evaluation.reached_goal, "run {index}");
-        assert!(
-            !evaluation.collision && evaluation.clearance_kept,
-            "run {index}"
-        );
+        safe_at_the_goal(8, index);
     }
+}
+
+/// Run `index` of the open-sea campaign (seed 11) with `targets`
+/// COLREGs-obeying targets, asserted to reach its goal with no collision
+/// and `d_th` kept; its record.
+fn safe_at_the_goal(targets: usize, index: u64) -> vorrt_scenarios::SimulationRecord {
+    let spec = OpenSeaSpec::with_targets(targets).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+    let seed = scenario
+        .seed
+        .expect("a generated scenario carries its seed");
+    let record = simulate(&scenario, seed).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(evaluation.reached_goal, "run {index}");
+    assert!(
+        !evaluation.collision && evaluation.clearance_kept,
+        "run {index}"
+    );
+    record
 }
 
 /// Run 704 of the campaign with 8 COLREGs-obeying targets (seed 11): TS1
@@ -237,19 +245,8 @@ fn sixteen_acting_vessels_of_run_300_are_kept_clear_of() {
 /// the plan in force arrives too late, and reaches the goal.
 #[test]
 fn a_plan_that_would_arrive_after_the_run_ends_is_replaced() {
-    let spec = OpenSeaSpec::with_targets(16).with_behaviour(TargetBehaviour::Colregs);
     for index in [552, 709] {
-        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
-        let seed = scenario
-            .seed
-            .expect("a generated scenario carries its seed");
-        let record = simulate(&scenario, seed).expect("valid settings");
-        let evaluation = evaluate(&scenario, &record);
-        assert!(evaluation.reached_goal, "run {index}");
-        assert!(
-            !evaluation.collision && evaluation.clearance_kept,
-            "run {index}"
-        );
+        let record = safe_at_the_goal(16, index);
         assert!(
             record
                 .triggers()
