@@ -530,6 +530,34 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         }
     }
 
+    /// Whether to ask for a plan that arrives sooner: all past and clear
+    /// (decision 52), or the plan in force late for the run's end (63).
+    fn sooner_plan_due(&mut self) -> Option<PlanTrigger> {
+        let latches = &self.encounters.latches;
+        if let Some(active) = self.active.as_mut() {
+            active.encounters_seen |= latches.iter().any(Option::is_some);
+        }
+        if self.pending.is_some() {
+            return None;
+        }
+        if past_and_clear_due(
+            self.active.as_ref(),
+            latches,
+            &self.retry,
+            &self.own,
+            self.setup.goal_m,
+            self.setup.service_speed_mps,
+        ) {
+            return Some(PlanTrigger::PastAndClear);
+        }
+        let end_s = self.setup.max_duration_s;
+        let late = (self.time_s, self.late_asked_s);
+        late_arrival_due(self.active.as_ref(), &self.retry, late, end_s).then(|| {
+            self.late_asked_s = self.time_s;
+            PlanTrigger::LateArrival
+        })
+    }
+
     /// Decides at the present moment whether to plan, and does: a trigger
     /// first asks whether the rest of the plan in force still holds.
     fn decide(&mut self) -> Decision {
@@ -559,32 +587,9 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         if self.pending.is_none() && self.retry.due(time_s, latches) {
             self.pending = Some(PlanTrigger::Retry);
         }
-        if let Some(active) = self.active.as_mut() {
-            active.encounters_seen |= latches.iter().any(Option::is_some);
-        }
-        if self.pending.is_none()
-            && past_and_clear_due(
-                self.active.as_ref(),
-                latches,
-                &self.retry,
-                &self.own,
-                setup.goal_m,
-                setup.service_speed_mps,
-            )
-        {
-            self.pending = Some(PlanTrigger::PastAndClear);
-        }
-        if self.pending.is_none()
-            && late_arrival_due(
-                self.active.as_ref(),
-                &self.retry,
-                (time_s, self.late_asked_s),
-                setup.max_duration_s,
-            )
-        {
-            self.late_asked_s = time_s;
-            self.pending = Some(PlanTrigger::LateArrival);
-        }
+        let sooner = self.sooner_plan_due();
+        self.pending = self.pending.or(sooner);
+        let (setup, latches) = (&mut self.setup, &self.encounters.latches);
         let Some(why) = self.pending.take() else {
             return Decision::SailedOn;
         };
