@@ -316,7 +316,7 @@ pub(super) fn past_and_clear_due(
     if !retry.is_idle() || latches.iter().any(Option::is_some) || speed_mps <= 0.0 {
         return false;
     }
-    let arrival_s = active.plan.waypoints.last().map_or(0.0, |end| end.time_s);
+    let arrival_s = arrival_s(&active.plan).unwrap_or(0.0);
     let straight_s = own.position_m.distance(goal_m) / speed_mps;
     arrival_s - straight_s > PAST_AND_CLEAR_GAIN_S
 }
@@ -340,11 +340,13 @@ pub(super) fn late_arrival_due(
     };
     retry.is_idle()
         && now_s >= asked_s + LATE_ARRIVAL_ASK_S
-        && active
-            .plan
-            .waypoints
-            .last()
-            .is_some_and(|end| end.time_s > end_s)
+        && arrival_s(&active.plan).is_some_and(|arrival_s| arrival_s > end_s)
+}
+
+/// When `plan` reaches the goal (its last waypoint), seconds of simulated
+/// time; `None` for a plan with no waypoint.
+fn arrival_s(plan: &Plan) -> Option<f64> {
+    plan.waypoints.last().map(|end| end.time_s)
 }
 
 /// Asked once the vessels are past and clear
@@ -363,12 +365,8 @@ pub(super) fn plan_if_sooner<C: Constraint>(
     let Some(in_force) = active.as_ref() else {
         return false;
     };
-    let arrival_s = |plan: &Plan| {
-        plan.waypoints
-            .last()
-            .map_or(f64::INFINITY, |end| end.time_s)
-    };
-    let in_force_s = arrival_s(&in_force.plan);
+    let arrives_s = |plan: &Plan| arrival_s(plan).unwrap_or(f64::INFINITY);
+    let in_force_s = arrives_s(&in_force.plan);
     let Some(planner) = planners.first_mut() else {
         return false;
     };
@@ -378,7 +376,7 @@ pub(super) fn plan_if_sooner<C: Constraint>(
     let Ok(plan) = planner.plan_with(problem, call.seed, SearchEffort::FirstPhase) else {
         return false;
     };
-    if arrival_s(&plan) > in_force_s - PAST_AND_CLEAR_GAIN_S {
+    if arrives_s(&plan) > in_force_s - PAST_AND_CLEAR_GAIN_S {
         return false;
     }
     plans.push(PlanEvent {
