@@ -22,6 +22,9 @@ fn without_clock(mut record: SimulationRecord) -> SimulationRecord {
     for event in &mut record.plans {
         event.statistics.elapsed_s = 0.0;
     }
+    for check in &mut record.plans_kept {
+        check.search_time_s = 0.0;
+    }
     record
 }
 

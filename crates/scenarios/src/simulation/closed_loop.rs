@@ -4,8 +4,8 @@
 //! steps, and take its record when done.
 
 use super::planning::{
-    ActivePlan, PlanCall, RetryTimer, follow, late_arrival_due, past_and_clear_due, plan_if_sooner,
-    plan_now, remaining_legs, replan_trigger,
+    ActivePlan, Asked, PlanCall, RetryTimer, follow, graded_planners, in_force_holds,
+    late_arrival_due, past_and_clear_due, plan_if_sooner, plan_now, replan_trigger, retry_in_force,
 };
 use super::record::{PlanCheck, PlanTrigger, SimulationRecord, call_seed};
 use super::recorded::RecordedMotion;
@@ -21,7 +21,7 @@ use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
 use vorrt_planner::scheme::SchemeConstraint;
 use vorrt_planner::validity::EncounterState;
-use vorrt_planner::{Constraint, Plan, Planner, PlannerConfig, PlannerError, PlanningProblem};
+use vorrt_planner::{Constraint, Plan, Planner, PlannerConfig, PlanningProblem};
 
 /// Ownship has arrived when it is this close to its goal, metres (the plan
 /// ends on the goal; this absorbs rounding).
@@ -108,28 +108,6 @@ pub struct LoopState<'a> {
     pub evasive: bool,
     /// Where the run stands.
     pub status: RunStatus,
-}
-
-/// One planner per level of the graded fallback, from all the rules down
-/// (rules 2(b), 17(b)).
-/// Every level keeps `constraint`: it is no duty the fallback may drop.
-fn graded_planners<C: Constraint + Clone>(
-    config: &PlannerConfig,
-    constraint: &C,
-) -> Result<Vec<Planner<C>>, PlannerError> {
-    let mut planners = Vec::new();
-    let mut level = Some(config.compliance);
-    while let Some(compliance) = level {
-        planners.push(Planner::with_constraint(
-            PlannerConfig {
-                compliance,
-                ..*config
-            },
-            constraint.clone(),
-        )?);
-        level = compliance.relaxed();
-    }
-    Ok(planners)
 }
 
 /// What stays the same for the whole run.
@@ -618,19 +596,33 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         if matches!(why, PlanTrigger::PastAndClear | PlanTrigger::LateArrival) {
             return self.ask_for_a_sooner_plan(&problem, &call);
         }
-        let still_valid = why != PlanTrigger::Retry
-            && self.active.as_ref().is_some_and(|active| {
-                let legs = remaining_legs(&active.plan, time_s);
-                setup
-                    .planners
-                    .first()
-                    .is_some_and(|planner| planner.check_legs(&problem, &legs).is_ok())
-            });
+        let retried = match why {
+            PlanTrigger::Retry => retry_in_force(
+                &mut setup.planners,
+                &problem,
+                &call,
+                (&mut self.active, &mut self.record.plans),
+                &mut self.retry,
+            ),
+            _ => None,
+        };
+        let search_time_s = match retried {
+            Some(Asked::Planned) => return Decision::Planned(why),
+            Some(Asked::Kept { search_time_s }) => Some(search_time_s),
+            None => None,
+        };
+        let still_valid = search_time_s.is_some()
+            || why != PlanTrigger::Retry
+                && self
+                    .active
+                    .as_ref()
+                    .is_some_and(|active| in_force_holds(&setup.planners, &problem, active));
         if still_valid && let Some(active) = self.active.as_mut() {
             active.kept(predicted, time_s, latches);
             self.record.plans_kept.push(PlanCheck {
                 time_s,
                 trigger: why,
+                search_time_s: search_time_s.unwrap_or(0.0),
             });
             return Decision::KeptPlan(why);
         }
@@ -652,15 +644,16 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
     /// plan in force changes: its predictions stay those it was checked
     /// against.
     fn ask_for_a_sooner_plan(&mut self, problem: &PlanningProblem, call: &PlanCall) -> Decision {
-        if plan_if_sooner(
+        let asked = plan_if_sooner(
             &mut self.setup.planners,
             problem,
             call,
             &mut self.active,
             &mut self.record.plans,
-        ) {
+        );
+        let Asked::Kept { search_time_s } = asked else {
             return Decision::Planned(call.why);
-        }
+        };
         // Past and clear is asked once per release of every encounter; a
         // late arrival again after `LATE_ARRIVAL_ASK_S`.
         if call.why == PlanTrigger::PastAndClear
@@ -671,6 +664,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
         self.record.plans_kept.push(PlanCheck {
             time_s: problem.start_time_s,
             trigger: call.why,
+            search_time_s,
         });
         Decision::KeptPlan(call.why)
     }

@@ -30,6 +30,11 @@
 //! retry grows the planner's trees in the first, goal-biased phase only
 //! (`vorrt_planner::SearchEffort::FirstPhase`), since it is one draw of many,
 //! except at the last level (safety only), which always searches in full.
+//! A fallback plan in force is judged by its own level's check, and a retry
+//! replaces it only with a plan that keeps more rules or, at the same
+//! level, arrives at least [`PAST_AND_CLEAR_GAIN_S`] sooner (decision 64);
+//! otherwise the retry is recorded as a check of the plan in force, with
+//! the time its search took ([`PlanCheck::search_time_s`]).
 //! Every vessel's state is recorded at every step, and the encounters are
 //! latched from the true states as a bridge officer would, with the
 //! planner's own propagation (`vorrt_planner::validity::EncounterState`).

@@ -7,8 +7,8 @@ use vorrt_geometry::angle::signed_turn;
 use vorrt_jfs::{Leg, OwnshipModel, TargetState};
 use vorrt_planner::{
     Compliance, Constraint, EvasionSearch, EvasiveManeuver, Plan, PlanStatistics, Planner,
-    PlanningProblem, SearchEffort, Waypoint, evasive_leg_holding, holds_manoeuvre_in_force,
-    legs_min_distance,
+    PlannerConfig, PlannerError, PlanningProblem, SearchEffort, Waypoint, evasive_leg_holding,
+    holds_manoeuvre_in_force, legs_min_distance,
 };
 
 use super::record::{PlanEvent, PlanTrigger};
@@ -100,6 +100,9 @@ impl RetryTimer {
 #[derive(Debug)]
 pub(super) struct ActivePlan {
     pub(super) plan: Plan,
+    /// The level of the graded fallback the plan keeps (the evasive
+    /// manoeuvre: [`Compliance::SafetyOnly`]).
+    pub(super) compliance: Compliance,
     /// When `predicted` was taken, seconds.
     pub(super) predicted_at_s: f64,
     pub(super) predicted: Vec<TargetState>,
@@ -199,6 +202,21 @@ pub(super) fn plan_now<C: Constraint>(
         // A fallback plan is sailed until a compliant one exists.
         retry.failed(time_s, &problem.encounters);
     }
+    put_in_force(plan, compliance, &attempts, problem, call, active, plans);
+}
+
+/// Puts `plan`, found at `compliance` by a call that spent `attempts`, in
+/// force, and records it.
+fn put_in_force(
+    plan: Plan,
+    compliance: Compliance,
+    attempts: &Attempts,
+    problem: &PlanningProblem,
+    call: &PlanCall,
+    active: &mut Option<ActivePlan>,
+    plans: &mut Vec<PlanEvent>,
+) {
+    let time_s = problem.start_time_s;
     let mut statistics = plan.statistics;
     statistics.elapsed_s += attempts.spent.elapsed_s;
     plans.push(PlanEvent {
@@ -206,7 +224,7 @@ pub(super) fn plan_now<C: Constraint>(
         trigger: call.why,
         seed: call.seed,
         succeeded: true,
-        error: attempts.first_error.map(|error| error.to_string()),
+        error: attempts.first_error.as_ref().map(ToString::to_string),
         statistics,
         waypoints: plan.waypoints.clone(),
         speeds_mps: plan.waypoint_speeds_mps(),
@@ -218,6 +236,7 @@ pub(super) fn plan_now<C: Constraint>(
     let anticipated = plan.anticipated_encounters();
     *active = Some(ActivePlan {
         plan,
+        compliance,
         predicted_at_s: time_s,
         predicted: problem.targets.clone(),
         anticipated,
@@ -225,6 +244,28 @@ pub(super) fn plan_now<C: Constraint>(
         evasive: false,
         evasion: None,
     });
+}
+
+/// One planner per level of the graded fallback, from all the rules down
+/// (rules 2(b), 17(b)).
+/// Every level keeps `constraint`: it is no duty the fallback may drop.
+pub(super) fn graded_planners<C: Constraint + Clone>(
+    config: &PlannerConfig,
+    constraint: &C,
+) -> Result<Vec<Planner<C>>, PlannerError> {
+    let mut planners = Vec::new();
+    let mut level = Some(config.compliance);
+    while let Some(compliance) = level {
+        planners.push(Planner::with_constraint(
+            PlannerConfig {
+                compliance,
+                ..*config
+            },
+            constraint.clone(),
+        )?);
+        level = compliance.relaxed();
+    }
+    Ok(planners)
 }
 
 /// The searches of one planner call, from all the rules down: the first
@@ -292,120 +333,6 @@ fn search<C: Constraint>(
     (None, attempts)
 }
 
-/// Whether the vessels the plan in force was made (or held) for are past and
-/// clear, while it still holds ownship off the straight line to the goal
-/// (`goal_m`, at `speed_mps`) by more than [`PAST_AND_CLEAR_GAIN_S`]: an
-/// encounter was in force since the plan was made, none is now (each was
-/// released by `colregs::has_passed`, the latch's one judgement), and the
-/// plan keeps every rule (no retry pending). Rule 8(d) asks for the action
-/// to be held until the other vessel is finally past and clear; a hold
-/// chosen for how the vessels were predicted (COLREGs-obeying vessels act,
-/// and the prediction of decision 18 may hold them on course longer) can
-/// outlast that by an hour.
-pub(super) fn past_and_clear_due(
-    active: Option<&ActivePlan>,
-    latches: &[Option<EncounterLatch>],
-    retry: &RetryTimer,
-    own: &VesselState,
-    goal_m: glam::DVec2,
-    speed_mps: f64,
-) -> bool {
-    let Some(active) = active.filter(|active| !active.evasive && active.encounters_seen) else {
-        return false;
-    };
-    if !retry.is_idle() || latches.iter().any(Option::is_some) || speed_mps <= 0.0 {
-        return false;
-    }
-    let arrival_s = arrival_s(&active.plan).unwrap_or(0.0);
-    let straight_s = own.position_m.distance(goal_m) / speed_mps;
-    arrival_s - straight_s > PAST_AND_CLEAR_GAIN_S
-}
-
-/// Whether ownship should ask for a plan that arrives sooner because the
-/// plan in force (not the evasive manoeuvre, no retry pending) reaches the
-/// goal only after `end_s`, the end of the run: sailed out, it would not
-/// arrive. Asked at most every [`LATE_ARRIVAL_ASK_S`] after `asked_s`, the
-/// last ask. Long alterations held at reduced speed among vessels whose
-/// encounters stay in force (so [`past_and_clear_due`] never asks) ran
-/// out of time in 3 of 1000 open-sea runs with 16 COLREGs-obeying targets
-/// (decision 63).
-pub(super) fn late_arrival_due(
-    active: Option<&ActivePlan>,
-    retry: &RetryTimer,
-    (now_s, asked_s): (f64, f64),
-    end_s: f64,
-) -> bool {
-    let Some(active) = active.filter(|active| !active.evasive) else {
-        return false;
-    };
-    retry.is_idle()
-        && now_s >= asked_s + LATE_ARRIVAL_ASK_S
-        && arrival_s(&active.plan).is_some_and(|arrival_s| arrival_s > end_s)
-}
-
-/// When `plan` reaches the goal (its last waypoint), seconds of simulated
-/// time; `None` for a plan with no waypoint.
-fn arrival_s(plan: &Plan) -> Option<f64> {
-    plan.waypoints.last().map(|end| end.time_s)
-}
-
-/// Asked once the vessels are past and clear
-/// ([`PlanTrigger::PastAndClear`]): searches at full compliance (the first
-/// phase only, as a retry) and puts the plan found in force only where it
-/// reaches the goal at least [`PAST_AND_CLEAR_GAIN_S`] sooner than the plan
-/// in force; returns whether it did. Otherwise the plan in force is kept
-/// (the caller records the check) and nothing is recorded here.
-pub(super) fn plan_if_sooner<C: Constraint>(
-    planners: &mut [Planner<C>],
-    problem: &PlanningProblem,
-    call: &PlanCall,
-    active: &mut Option<ActivePlan>,
-    plans: &mut Vec<PlanEvent>,
-) -> bool {
-    let Some(in_force) = active.as_ref() else {
-        return false;
-    };
-    let arrives_s = |plan: &Plan| arrival_s(plan).unwrap_or(f64::INFINITY);
-    let in_force_s = arrives_s(&in_force.plan);
-    let Some(planner) = planners.first_mut() else {
-        return false;
-    };
-    if planner.config().compliance != Compliance::Full {
-        return false;
-    }
-    let Ok(plan) = planner.plan_with(problem, call.seed, SearchEffort::FirstPhase) else {
-        return false;
-    };
-    if arrives_s(&plan) > in_force_s - PAST_AND_CLEAR_GAIN_S {
-        return false;
-    }
-    plans.push(PlanEvent {
-        time_s: problem.start_time_s,
-        trigger: call.why,
-        seed: call.seed,
-        succeeded: true,
-        error: None,
-        statistics: plan.statistics,
-        waypoints: plan.waypoints.clone(),
-        speeds_mps: plan.waypoint_speeds_mps(),
-        evasive_course_deg: None,
-        evasive_speed_mps: None,
-        compliance: Compliance::Full,
-        samples_drawn: plan.statistics.samples,
-    });
-    let anticipated = plan.anticipated_encounters();
-    *active = Some(ActivePlan {
-        plan,
-        predicted_at_s: problem.start_time_s,
-        predicted: problem.targets.clone(),
-        anticipated,
-        encounters_seen: problem.encounters.iter().any(Option::is_some),
-        evasive: false,
-        evasion: None,
-    });
-    true
-}
-
 /// After every level failed: keeps the plan in force if the planner's
 /// validity check still accepts the rest of it, or else puts the evasive
 /// manoeuvre in force (the one in force held unless another is clearly
@@ -468,6 +395,7 @@ fn fall_back<C: Constraint>(
         } else {
             *active = Some(ActivePlan {
                 plan: leg_plan(leg, time_s),
+                compliance: Compliance::SafetyOnly,
                 predicted_at_s: time_s,
                 predicted: problem.targets.clone(),
                 anticipated: vec![Vec::new(); problem.targets.len()],
@@ -624,5 +552,9 @@ fn return_moved(assumed_s: Option<f64>, now_s: Option<f64>) -> bool {
     }
 }
 
+mod retry;
+mod sooner;
+pub(super) use retry::{in_force_holds, retry_in_force};
+pub(super) use sooner::{Asked, arrival_s, late_arrival_due, past_and_clear_due, plan_if_sooner};
 #[cfg(test)]
 mod tests;

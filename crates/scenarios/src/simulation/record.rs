@@ -104,6 +104,11 @@ pub struct PlanCheck {
     pub time_s: f64,
     /// What triggered it.
     pub trigger: PlanTrigger,
+    /// Wall-clock time spent searching for a plan that was not put in
+    /// force (a sooner plan asked for, or a retry while a fallback plan is
+    /// sailed), seconds: 0 where only the validity check ran.
+    #[serde(default)]
+    pub search_time_s: f64,
 }
 
 /// Everything that happened in one closed-loop run.
@@ -195,12 +200,14 @@ impl SimulationRecord {
         self.plans.iter().filter(|event| !event.succeeded).count()
     }
 
-    /// Wall-clock time spent planning, seconds.
+    /// Wall-clock time spent planning, seconds: every planner call, and
+    /// the searches whose plan was not put in force ([`PlanCheck::search_time_s`]).
     #[must_use]
     pub fn planning_time_s(&self) -> f64 {
         self.plans
             .iter()
             .map(|event| event.statistics.elapsed_s)
+            .chain(self.plans_kept.iter().map(|kept| kept.search_time_s))
             .sum()
     }
 

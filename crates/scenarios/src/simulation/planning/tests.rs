@@ -135,6 +135,7 @@ fn fall_back_with(target: TargetState) -> (ActivePlan, PlanEvent) {
     let mut active = Some(ActivePlan {
         anticipated: vec![Vec::new()],
         plan: straight,
+        compliance: Compliance::Full,
         predicted_at_s: 0.0,
         predicted: problem.targets.clone(),
         encounters_seen: false,
