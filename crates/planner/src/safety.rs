@@ -40,8 +40,10 @@ use vorrt_geometry::VelocityObstacle;
 use vorrt_jfs::LinearTrack;
 
 mod distance;
+mod velocities;
 use distance::beyond_reach;
 pub use distance::min_distance_over;
+pub use velocities::StateVelocities;
 
 /// One candidate move out of a parent node.
 #[derive(Debug, Clone, Copy)]
@@ -76,6 +78,10 @@ pub struct SafetyChecker<'a, C = NoConstraint> {
     in_reach: Option<&'a [bool]>,
     /// Whether a leg's check keeps its memo (decision 54; `validity`).
     pub(crate) leg_memo: bool,
+    /// Per target, the velocities of its track's states, worked out once
+    /// ([`with_state_velocities`](Self::with_state_velocities)); empty:
+    /// each leg works them out.
+    pub(crate) state_velocities: &'a [StateVelocities],
 }
 
 impl<'a> SafetyChecker<'a> {
@@ -104,6 +110,7 @@ impl<'a> SafetyChecker<'a> {
             constraint: &NoConstraint,
             in_reach: None,
             leg_memo: true,
+            state_velocities: &[],
         }
     }
 }
@@ -123,7 +130,31 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             constraint,
             in_reach: self.in_reach,
             leg_memo: self.leg_memo,
+            state_velocities: self.state_velocities,
         }
+    }
+
+    /// The same checker, taking each target's velocity from `velocities`
+    /// (one per track, [`StateVelocities::of`]) where it applies: the same
+    /// velocities, bit for bit, worked out once for every leg judged.
+    #[must_use]
+    pub fn with_state_velocities(mut self, velocities: &'a [StateVelocities]) -> Self {
+        self.state_velocities = velocities;
+        self
+    }
+
+    /// Target `index`'s velocity in state `target`: from the velocities
+    /// worked out once where they apply, else from `memo` (or worked out).
+    pub(crate) fn target_velocity(
+        &self,
+        index: usize,
+        target: &VesselState,
+        memo: &mut LegMemo,
+    ) -> DVec2 {
+        self.state_velocities
+            .get(index)
+            .and_then(|known| known.velocity_of(target))
+            .unwrap_or_else(|| memo.target_velocity(index, target))
     }
 
     /// The farthest distance between reference points at which target
@@ -208,6 +239,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             constraint: self.constraint,
             in_reach: Some(in_reach),
             leg_memo: self.leg_memo,
+            state_velocities: self.state_velocities,
         }
     }
 
@@ -436,7 +468,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 course_before_rad,
                 (&own, own_mps, before_mps),
                 &target,
-                memo.target_velocity(index, &target),
+                self.target_velocity(index, &target, memo),
                 rules,
             ) {
                 return Err(RejectionCause::Colregs(

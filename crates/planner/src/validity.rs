@@ -23,7 +23,7 @@
 
 use crate::constraint::{Constraint, NoConstraint, Segment};
 use crate::plan::RejectionCause;
-use crate::safety::{Move, SafetyChecker};
+use crate::safety::{Move, SafetyChecker, StateVelocities};
 use glam::DVec2;
 use vorrt_colregs::risk::no_risk_while_steady;
 use vorrt_colregs::rules::{
@@ -118,6 +118,7 @@ impl EncounterState {
             Some(Along {
                 memo,
                 tracks,
+                known: checker.state_velocities(),
                 elapsed_s,
                 sailed_mps: sailed_mps.filter(|_| checker.leg_memo()),
             }),
@@ -569,6 +570,7 @@ pub fn check_legs_with<C: Constraint>(
         .iter()
         .map(vorrt_jfs::TargetState::track)
         .collect();
+    let velocities: Vec<StateVelocities> = tracks.iter().map(StateVelocities::of).collect();
     let checker = SafetyChecker::new(
         config,
         &tracks,
@@ -578,6 +580,7 @@ pub fn check_legs_with<C: Constraint>(
     )
     .with_steady_course(problem.steady_course_rad)
     .with_turning_at_start(problem.turning_at_start)
+    .with_state_velocities(&velocities)
     .with_constraint(constraint);
     let targets = tracks.len();
     let mut state = EncounterState {

@@ -1,7 +1,9 @@
 //! The memo a leg's check keeps from piece to piece (decision 54): the
 //! targets no risk can reach while ownship and they hold their velocities
 //! are not judged again on the same stretch of their tracks. With it and
-//! without it (`SafetyChecker::without_leg_memo`) every leg gets the same
+//! without it (`SafetyChecker::without_leg_memo`), and with each target's
+//! velocities worked out once (`SafetyChecker::with_state_velocities`) or
+//! not, every leg gets the same
 //! verdict and leaves the same encounters and alterations, on generated
 //! encounters: targets near ownship on any course, some holding their course
 //! for a while before they turn for a goal (a track of two stretches), legs
@@ -15,7 +17,7 @@ use glam::DVec2;
 use proptest::prelude::*;
 use vorrt_colregs::VesselState;
 use vorrt_jfs::{Leg, LinearTrack, Pose, TargetState};
-use vorrt_planner::safety::SafetyChecker;
+use vorrt_planner::safety::{SafetyChecker, StateVelocities};
 use vorrt_planner::validity::{EncounterState, MotionValidator};
 use vorrt_planner::{Compliance, PlannerConfig};
 
@@ -104,10 +106,16 @@ proptest! {
         let config = PlannerConfig { clearance_m, compliance, ..PlannerConfig::default() };
         let goal = DVec2::new(0.0, 30_000.0);
         let tracks: Vec<LinearTrack> = targets.iter().map(TargetState::track).collect();
-        let with = SafetyChecker::new(&config, &tracks, own(), goal, 0.0);
+        // With the memo and each target's velocities worked out once, and
+        // with neither.
+        let velocities: Vec<StateVelocities> = tracks.iter().map(StateVelocities::of).collect();
+        let with = SafetyChecker::new(&config, &tracks, own(), goal, 0.0)
+            .with_state_velocities(&velocities);
         prop_assert!(with.leg_memo());
+        prop_assert_eq!(with.state_velocities().len(), tracks.len());
         let without = SafetyChecker::new(&config, &tracks, own(), goal, 0.0).without_leg_memo();
         prop_assert!(!without.leg_memo());
+        prop_assert!(without.state_velocities().is_empty());
         let count = tracks.len();
         let fresh = || EncounterState {
             latches: vec![None; count],

@@ -3,6 +3,7 @@
 //! velocities hold.
 
 use super::{Constraint, DVec2, LinearTrack, SafetyChecker, VesselState, no_risk_while_steady};
+use crate::safety::StateVelocities;
 
 impl<C: Constraint> SafetyChecker<'_, C> {
     /// The same checker without the memo of decision 54: each piece of a
@@ -19,6 +20,14 @@ impl<C: Constraint> SafetyChecker<'_, C> {
     #[must_use]
     pub fn leg_memo(&self) -> bool {
         self.leg_memo
+    }
+
+    /// Each target's velocities worked out once for every leg
+    /// ([`with_state_velocities`](Self::with_state_velocities); may be
+    /// empty).
+    #[must_use]
+    pub fn state_velocities(&self) -> &[StateVelocities] {
+        self.state_velocities
     }
 }
 
@@ -95,6 +104,8 @@ pub(super) const SAILED_TOLERANCE_MPS: f64 = 1e-9;
 pub(crate) struct Along<'m> {
     pub(super) memo: &'m mut LegMemo,
     pub(super) tracks: &'m [LinearTrack],
+    /// Each target's velocities worked out once (may be empty).
+    pub(super) known: &'m [StateVelocities],
     pub(super) elapsed_s: f64,
     pub(super) sailed_mps: Option<DVec2>,
 }
@@ -130,8 +141,16 @@ impl Along<'_> {
             .is_some_and(|stretch| self.tracks[index].stretch_at(self.elapsed_s) == Some(stretch))
     }
 
-    /// `target`'s velocity ([`velocity_of`]).
+    /// `target`'s velocity: from the velocities worked out once where they
+    /// apply, else [`velocity_of`].
     pub(super) fn velocity(&mut self, index: usize, target: &VesselState) -> DVec2 {
+        if let Some(velocity_mps) = self
+            .known
+            .get(index)
+            .and_then(|known| known.velocity_of(target))
+        {
+            return velocity_mps;
+        }
         match self.memo.velocities.get_mut(index) {
             Some(slot) => velocity_of(slot, target),
             None => target.velocity_mps(),

@@ -244,6 +244,7 @@ impl<C: Constraint> Planner<C> {
         )
         .with_steady_course(problem.steady_course_rad)
         .with_turning_at_start(problem.turning_at_start)
+        .with_state_velocities(&self.track_velocities)
         .with_constraint(&self.constraint);
         // A refusal carried to a wider clearance may name another cause
         // than the check would: only where nothing refused is kept and no

@@ -20,7 +20,7 @@ use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
 use crate::plan::{Plan, PlanStatistics, RejectionCounts};
 use crate::problem::PlanningProblem;
 use crate::replay::{FailedSearch, Replaying, Verdicts};
-use crate::safety::SafetyChecker;
+use crate::safety::{SafetyChecker, StateVelocities};
 use crate::sampler::Sampler;
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator, check_legs_with};
@@ -71,6 +71,8 @@ pub struct Planner<C = NoConstraint> {
     constraint: C,
     tree: Tree,
     tracks: Vec<LinearTrack>,
+    /// Each track's state velocities, worked out once per call.
+    track_velocities: Vec<StateVelocities>,
     scratch: EncounterState,
     /// The last search, when it found no safe path.
     last_failure: Option<Box<FailedSearch>>,
@@ -109,6 +111,7 @@ impl<C: Constraint> Planner<C> {
             constraint,
             tree: Tree::default(),
             tracks: Vec::new(),
+            track_velocities: Vec::new(),
             scratch: EncounterState::default(),
             last_failure: None,
             verdicts: RefCell::new(Verdicts::default()),
@@ -287,6 +290,9 @@ impl<C: Constraint> Planner<C> {
         self.tracks.clear();
         self.tracks
             .extend(problem.targets.iter().map(TargetState::track));
+        self.track_velocities.clear();
+        self.track_velocities
+            .extend(self.tracks.iter().map(StateVelocities::of));
         let targets = self.tracks.len();
         let (root_latches, root_alterations) = self.root_encounters(problem);
         let margin = DVec2::splat(config.sampling_margin_m);
@@ -454,6 +460,7 @@ impl<C: Constraint> Planner<C> {
         )
         .with_steady_course(problem.steady_course_rad)
         .with_turning_at_start(problem.turning_at_start)
+        .with_state_velocities(&self.track_velocities)
         .with_constraint(&self.constraint);
         let checker = Replaying {
             validator: &checker,
