@@ -7,6 +7,7 @@
 use crate::error::CliError;
 use crate::report::Report;
 use geojson::{Feature, FeatureCollection, Geometry, JsonObject, JsonValue};
+use std::fmt::Write as _;
 use std::path::Path;
 use time::OffsetDateTime;
 use vorrt_colregs::VesselState;
@@ -75,6 +76,14 @@ pub(crate) fn trajectory_csv(
     let error = |error: csv::Error| CliError::Output(format!("cannot write the CSV: {error}"));
     writer.write_record(&header).map_err(error)?;
     let vessels = vessels(scenario, record);
+    // One buffer for every field: a 100-vessel run writes 10^6 of them.
+    let mut field = String::new();
+    let mut put = |writer: &mut csv::Writer<Vec<u8>>, value: std::fmt::Arguments<'_>| {
+        field.clear();
+        // Formatting into a String cannot fail.
+        let _ = field.write_fmt(value);
+        writer.write_field(&field).map_err(error)
+    };
     for (step, time_s) in record.times_s.iter().enumerate() {
         for (spec, _, states) in &vessels {
             let Some(state) = states.get(step) else {
@@ -82,22 +91,26 @@ pub(crate) fn trajectory_csv(
             };
             // Shortest text that reads back as the same number: `vorrt
             // judge` on this file judges exactly the recorded run.
-            let mut row = vec![
-                format!("{time_s}"),
-                spec.name.clone(),
-                format!("{}", state.position_m.x),
-                format!("{}", state.position_m.y),
-                format!("{}", course_deg(state)),
-                format!("{}", units::mps_to_knots(state.speed_mps)),
-                // The hull length, so that `vorrt judge` without the
-                // scenario judges collisions on the true hulls.
-                format!("{}", state.length_m),
-            ];
+            put(&mut writer, format_args!("{time_s}"))?;
+            writer.write_field(&spec.name).map_err(error)?;
+            put(&mut writer, format_args!("{}", state.position_m.x))?;
+            put(&mut writer, format_args!("{}", state.position_m.y))?;
+            put(&mut writer, format_args!("{}", course_deg(state)))?;
+            put(
+                &mut writer,
+                format_args!("{}", units::mps_to_knots(state.speed_mps)),
+            )?;
+            // The hull length, so that `vorrt judge` without the scenario
+            // judges collisions on the true hulls.
+            put(&mut writer, format_args!("{}", state.length_m))?;
             if let Some(frame) = &frame {
                 let (lat_deg, lon_deg) = frame.to_lat_lon_deg(state.position_m);
-                row.extend([format!("{lat_deg:.7}"), format!("{lon_deg:.7}")]);
+                put(&mut writer, format_args!("{lat_deg:.7}"))?;
+                put(&mut writer, format_args!("{lon_deg:.7}"))?;
             }
-            writer.write_record(&row).map_err(error)?;
+            writer
+                .write_record(std::iter::empty::<&[u8]>())
+                .map_err(error)?;
         }
     }
     let bytes = writer
