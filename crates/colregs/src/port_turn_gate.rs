@@ -3,7 +3,10 @@
 //! the vessels its bearing tests certainly refuse, found by dot products
 //! (decision 46).
 
+use crate::VesselState;
+use crate::rules::is_on_port_side;
 use glam::DVec2;
+use std::f64::consts::PI;
 use vorrt_geometry::angle;
 
 /// The bearing tests of [`is_port_turn_toward_vessel`](crate::rules::is_port_turn_toward_vessel) for one turn, worked
@@ -61,6 +64,48 @@ impl PortTurnGate {
     }
 }
 
+/// The sign of `offset_m · direction_mps` (a vessel's offset from ownship
+/// against ownship's velocity on some course, `speed_mps` its length), where
+/// it is certain: beyond 1e-9 of the range times the speed, far beyond the
+/// rounding of a bearing worked out from angles. `Some(true)`: the vessel
+/// is certainly ahead of the line square to that course; `Some(false)`:
+/// certainly behind it; `None`: within a hair of it, or no speed (the caller
+/// then works the bearing out). The bearings of the settled-turn predicate
+/// take their verdicts from this where it answers (decision 46's argument):
+/// the same verdicts, without an arctangent for most vessels.
+#[must_use]
+pub(crate) fn certain_side(offset_m: DVec2, direction_mps: DVec2, speed_mps: f64) -> Option<bool> {
+    let margin = 1e-9 * (offset_m.x.abs() + offset_m.y.abs()) * speed_mps;
+    let dot = offset_m.dot(direction_mps);
+    (speed_mps > 0.0 && dot.abs() > margin).then_some(dot > 0.0)
+}
+
+/// Whether a vessel at `target_m` is forward of `own`'s beam (its relative
+/// bearing outside 90°-270°), `own_mps` being `own`'s velocity: from
+/// [`certain_side`] where it answers, else from the bearing.
+pub(crate) fn forward_of_beam_moving(own: &VesselState, own_mps: DVec2, target_m: DVec2) -> bool {
+    certain_side(target_m - own.position_m, own_mps, own.speed_mps).unwrap_or_else(|| {
+        let bearing = angle::relative_bearing(own.position_m, own.course_rad, target_m);
+        !(0.5 * PI..=1.5 * PI).contains(&bearing)
+    })
+}
+
+/// Whether a vessel at `target_m` is on the port side of `course_before_rad`
+/// from `own`'s position ([`is_on_port_side`]), `before_mps` being `own`'s
+/// velocity on that course: from [`certain_side`] against the starboard
+/// normal where it answers, else from the bearing.
+pub(crate) fn on_port_side_moving(
+    own: &VesselState,
+    (course_before_rad, before_mps): (f64, DVec2),
+    target_m: DVec2,
+) -> bool {
+    let starboard_mps = DVec2::new(before_mps.y, -before_mps.x);
+    certain_side(target_m - own.position_m, starboard_mps, own.speed_mps).map_or_else(
+        || is_on_port_side(own.position_m, course_before_rad, target_m),
+        |starboard| !starboard,
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -93,6 +138,35 @@ mod tests {
             let gate = PortTurnGate::new(before_rad, course_rad);
             if is_port_turn_toward_vessel(before_rad, &own, &target, &params) {
                 prop_assert!(gate.may_turn_toward(target.position_m));
+            }
+        }
+    }
+
+    proptest! {
+        /// Where `certain_side` answers, it gives the relative bearing's
+        /// verdicts: forward of the beam on the course, and on the port side
+        /// of it (the starboard normal's side), as the predicate's angles do.
+        #[test]
+        fn a_certain_side_is_the_bearings_verdict(
+            course_deg in 0.0f64..360.0,
+            speed_mps in 0.0f64..12.0,
+            bearing_deg in prop_oneof![0.0f64..360.0, Just(90.0), Just(270.0), Just(180.0), Just(0.0)],
+            range_m in 1.0f64..20_000.0,
+        ) {
+            let course_rad = course_deg.to_radians();
+            let to = course_rad + bearing_deg.to_radians();
+            let offset_m = DVec2::new(to.sin(), to.cos()) * range_m;
+            let own_mps = angle::velocity(course_rad, speed_mps);
+            let bearing = angle::relative_bearing(DVec2::ZERO, course_rad, offset_m);
+            if let Some(ahead) = certain_side(offset_m, own_mps, speed_mps) {
+                prop_assert_eq!(ahead, !(0.5 * std::f64::consts::PI..=1.5 * std::f64::consts::PI).contains(&bearing));
+            }
+            let starboard_mps = DVec2::new(own_mps.y, -own_mps.x);
+            if let Some(starboard) = certain_side(offset_m, starboard_mps, speed_mps) {
+                prop_assert_eq!(!starboard, bearing > std::f64::consts::PI);
+            }
+            if speed_mps == 0.0 {
+                prop_assert!(certain_side(offset_m, own_mps, speed_mps).is_none());
             }
         }
     }

@@ -46,6 +46,7 @@ use std::f64::consts::PI;
 use vorrt_geometry::{Cpa, angle};
 
 pub use crate::port_turn_gate::PortTurnGate;
+use crate::port_turn_gate::{forward_of_beam_moving, on_port_side_moving};
 pub use contact::{contact_range_m, in_contact, keeps_clearance};
 
 mod contact;
@@ -556,14 +557,9 @@ pub fn is_port_turn_toward_vessel_moving(
     // bearing gate lets through, `PortTurnGate`: 93 % of 3.7 M calls on
     // 60 runs with 8 COLREGs-obeying targets), before the two bearings
     // (decision 53).
-    let forward_of_beam = || {
-        let bearing_now =
-            angle::relative_bearing(own.position_m, own.course_rad, target.position_m);
-        !(0.5 * PI..=1.5 * PI).contains(&bearing_now)
-    };
     crate::risk::assess_risk_moving(own, own_mps, target, target_mps, parameters).at_risk
-        && forward_of_beam()
-        && is_on_port_side(own.position_m, course_before_rad, target.position_m)
+        && forward_of_beam_moving(own, own_mps, target.position_m)
+        && on_port_side_moving(own, (course_before_rad, before_mps), target.position_m)
         && !crate::risk::assess_risk_moving(
             &crate::VesselState {
                 course_rad: course_before_rad,
