@@ -84,6 +84,22 @@ impl RetryTimer {
         self.situation.extend_from_slice(encounters);
     }
 
+    /// A plan found at `compliance` was put in force at `time_s` with
+    /// `encounters` in force: nothing to retry if it keeps every rule, else
+    /// a fallback plan is sailed until a compliant one exists.
+    fn put_in_force(
+        &mut self,
+        compliance: Compliance,
+        time_s: f64,
+        encounters: &[Option<EncounterLatch>],
+    ) {
+        if compliance == Compliance::Full {
+            self.succeeded();
+        } else {
+            self.failed(time_s, encounters);
+        }
+    }
+
     /// Whether no retry is pending (a plan that keeps every rule is in
     /// force).
     pub(super) fn is_idle(&self) -> bool {
@@ -196,12 +212,7 @@ pub(super) fn plan_now<C: Constraint>(
         fall_back(planners, problem, model, call, active, plans, attempts);
         return;
     };
-    if compliance == Compliance::Full {
-        retry.succeeded();
-    } else {
-        // A fallback plan is sailed until a compliant one exists.
-        retry.failed(time_s, &problem.encounters);
-    }
+    retry.put_in_force(compliance, time_s, &problem.encounters);
     put_in_force(plan, compliance, &attempts, problem, call, active, plans);
 }
 
@@ -266,6 +277,14 @@ pub(super) fn graded_planners<C: Constraint + Clone>(
         level = compliance.relaxed();
     }
     Ok(planners)
+}
+
+/// Where the planner of `compliance` stands in `planners` (the graded
+/// fallback, strictest first), if there is one.
+fn level_of<C: Constraint>(planners: &[Planner<C>], compliance: Compliance) -> Option<usize> {
+    planners
+        .iter()
+        .position(|planner| planner.config().compliance == compliance)
 }
 
 /// The searches of one planner call, from all the rules down: the first

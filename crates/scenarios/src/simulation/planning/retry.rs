@@ -3,7 +3,7 @@
 
 use super::{
     ActivePlan, Asked, Compliance, Constraint, PAST_AND_CLEAR_GAIN_S, PlanCall, PlanEvent, Planner,
-    PlanningProblem, RetryTimer, arrival_s, put_in_force, remaining_legs, search,
+    PlanningProblem, RetryTimer, arrival_s, level_of, put_in_force, remaining_legs, search,
 };
 use std::time::Instant;
 
@@ -32,9 +32,7 @@ pub(in crate::simulation) fn retry_in_force<C: Constraint>(
     let in_force = active
         .as_ref()
         .filter(|active| !active.evasive && active.compliance != Compliance::Full)?;
-    let level = planners
-        .iter()
-        .position(|planner| planner.config().compliance == in_force.compliance)?;
+    let level = level_of(planners, in_force.compliance)?;
     if !in_force_holds(planners, problem, in_force) {
         return None;
     }
@@ -47,11 +45,7 @@ pub(in crate::simulation) fn retry_in_force<C: Constraint>(
                 || arrival_s(&plan)
                     .is_some_and(|arrives_s| arrives_s <= in_force_s - PAST_AND_CLEAR_GAIN_S) =>
         {
-            if compliance == Compliance::Full {
-                retry.succeeded();
-            } else {
-                retry.failed(problem.start_time_s, &problem.encounters);
-            }
+            retry.put_in_force(compliance, problem.start_time_s, &problem.encounters);
             put_in_force(plan, compliance, &attempts, problem, call, active, plans);
             Some(Asked::Planned)
         }
@@ -66,8 +60,8 @@ pub(in crate::simulation) fn retry_in_force<C: Constraint>(
 
 /// Whether the rest of the plan in force (at `problem`'s start) still
 /// passes the validity check of the level it was found at (decision 64): a
-/// fallback plan is judged by the duties it was allowed to drop, as when
-/// it was found; whether a stricter plan exists is the retry's question
+/// fallback plan is judged by the duties its level keeps, as when it was
+/// found; whether a stricter plan exists is the retry's question
 /// ([`retry_in_force`]). The evasive manoeuvre is judged at the strictest
 /// level.
 pub(in crate::simulation) fn in_force_holds<C: Constraint>(
@@ -78,10 +72,7 @@ pub(in crate::simulation) fn in_force_holds<C: Constraint>(
     let level = if active.evasive {
         0
     } else {
-        planners
-            .iter()
-            .position(|planner| planner.config().compliance == active.compliance)
-            .unwrap_or(0)
+        level_of(planners, active.compliance).unwrap_or(0)
     };
     let legs = remaining_legs(&active.plan, problem.start_time_s);
     planners
