@@ -352,8 +352,9 @@ fn search<C: Constraint>(
     (None, attempts)
 }
 
-/// After every level failed: keeps the plan in force if the planner's
-/// validity check still accepts the rest of it, or else puts the evasive
+/// After every level failed: keeps the plan in force if the validity check
+/// of its level still accepts the rest of it ([`in_force_holds`]), or else
+/// puts the evasive
 /// manoeuvre in force (the one in force held unless another is clearly
 /// better); records the failed call. A plan in force that no longer passes
 /// the check is the manoeuvre under way, and is held against the evasive
@@ -375,11 +376,12 @@ fn fall_back<C: Constraint>(
         .as_ref()
         .filter(|active| !active.evasive)
         .map(|active| remaining_legs(&active.plan, time_s));
-    let keep_plan = in_force.as_ref().is_some_and(|legs| {
-        planners
-            .first()
-            .is_some_and(|planner| planner.check_legs(problem, legs).is_ok())
-    });
+    // Judged at its own level, as at any trigger (decision 64).
+    let kept_level = active
+        .as_ref()
+        .filter(|active| !active.evasive && in_force_holds(planners, problem, active))
+        .map(|active| active.compliance);
+    let keep_plan = kept_level.is_some();
     let mut held_plan = false;
     let evasion = if keep_plan {
         None
@@ -437,11 +439,9 @@ fn fall_back<C: Constraint>(
         evasive_course_deg: evasion.map(|evasion| evasion.course_rad.to_degrees()),
         evasive_speed_mps: evasion.map(|evasion| evasion.speed_mps),
         samples_drawn: attempts.samples_drawn,
-        compliance: if keep_plan {
-            Compliance::Full
-        } else {
-            Compliance::SafetyOnly
-        },
+        // The level of the plan kept (a fallback plan kept departs from
+        // the rules as it did), else the evasive manoeuvre's.
+        compliance: kept_level.unwrap_or(Compliance::SafetyOnly),
     });
     if held_plan && let Some(active) = active.as_mut() {
         // Held, not re-checked: what it assumes is brought up to date, so
