@@ -50,7 +50,7 @@
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
-use vorrt_jfs::Piece;
+use vorrt_jfs::{Leg, Piece};
 
 /// What a piece of ownship's motion breaks, by a [`Constraint`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -118,6 +118,13 @@ pub struct Segment {
     pub duration_s: f64,
     /// Ownship's course along the piece, radians clockwise from north.
     pub course_rad: f64,
+    /// How far either way of `course_rad` ownship's heading may be along
+    /// the piece, radians: on a chord of a turn, half the angle it sweeps
+    /// (the chord's course is the heading at its middle); 0 on a straight
+    /// piece. A constraint that judges the heading judges every heading in
+    /// `course_rad ± course_spread_rad`, as an observer sampling the heading
+    /// anywhere along the piece sees one of them.
+    pub course_spread_rad: f64,
 }
 
 impl Segment {
@@ -157,7 +164,69 @@ impl Segment {
             start_elapsed_s: leg_start_elapsed_s + piece.elapsed_s,
             duration_s: piece.duration_s,
             course_rad: piece.course_rad,
+            course_spread_rad: 0.0,
         }
+    }
+
+    /// The segment of `piece` of `leg` ([`of_piece`](Self::of_piece),
+    /// with the leg's chord and timing errors) and the heading at the
+    /// piece's end (on a turn, part way round): a chord of the turn sweeps
+    /// from `start_heading_rad`, the heading at the last piece's end, to it
+    /// ([`with_headings`](Self::with_headings)).
+    ///
+    /// ```
+    /// use vorrt_planner::constraint::Segment;
+    /// use vorrt_planner::{DVec2, Leg};
+    /// use vorrt_jfs::Pose;
+    /// let start = Pose { position_m: DVec2::ZERO, course_rad: 0.0 };
+    /// let leg = Leg::turning_onto(start, 0.5, 700.0, 6.0, 1000.0);
+    /// let piece = leg.pieces(100.0).next().unwrap();
+    /// let (chord, heading_rad) = Segment::of_leg_piece(&leg, &piece, 0.0, 0.0);
+    /// assert!(chord.course_spread_rad > 0.0 && heading_rad > chord.course_rad);
+    /// ```
+    #[must_use]
+    pub fn of_leg_piece(
+        leg: &Leg,
+        piece: &Piece,
+        leg_start_elapsed_s: f64,
+        start_heading_rad: f64,
+    ) -> (Self, f64) {
+        let segment = Self::of_piece(
+            piece,
+            leg_start_elapsed_s,
+            leg.piece_error_m(),
+            leg.timing_error_m(),
+        );
+        if piece.turning {
+            let end_rad = leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad;
+            (segment.with_headings(start_heading_rad, end_rad), end_rad)
+        } else {
+            (segment, piece.course_rad)
+        }
+    }
+
+    /// The same segment with the headings sailed along it from
+    /// `start_course_rad` to `end_course_rad` (a chord of a turn): its
+    /// [`course_spread_rad`](Self::course_spread_rad) is the larger of their
+    /// differences from its course.
+    ///
+    /// ```
+    /// use vorrt_planner::constraint::Segment;
+    /// use vorrt_planner::DVec2;
+    /// let chord = Segment {
+    ///     start_m: DVec2::ZERO, end_m: DVec2::new(10.0, 100.0), margin_m: 1.0,
+    ///     start_elapsed_s: 0.0, duration_s: 20.0, course_rad: 0.1, course_spread_rad: 0.0,
+    /// }
+    /// .with_headings(0.05, 0.15);
+    /// assert!((chord.course_spread_rad - 0.05).abs() < 1e-12);
+    /// ```
+    #[must_use]
+    pub fn with_headings(mut self, start_course_rad: f64, end_course_rad: f64) -> Self {
+        let off = |heading_rad: f64| {
+            vorrt_geometry::angle::signed_turn(self.course_rad, heading_rad).abs()
+        };
+        self.course_spread_rad = off(start_course_rad).max(off(end_course_rad));
+        self
     }
 
     /// The distance from `point_m` to the segment, metres.
@@ -167,7 +236,7 @@ impl Segment {
     /// use glam::DVec2;
     /// let segment = Segment {
     ///     start_m: DVec2::ZERO, end_m: DVec2::new(0.0, 100.0), margin_m: 0.0,
-    ///     start_elapsed_s: 0.0, duration_s: 20.0, course_rad: 0.0,
+    ///     start_elapsed_s: 0.0, duration_s: 20.0, course_rad: 0.0, course_spread_rad: 0.0,
     /// };
     /// assert_eq!(segment.distance_to_m(DVec2::new(30.0, 50.0)), 30.0);
     /// assert_eq!(segment.distance_to_m(DVec2::new(0.0, 130.0)), 30.0);
@@ -286,6 +355,7 @@ mod tests {
             start_elapsed_s: 0.0,
             duration_s: 1.0,
             course_rad: 0.0,
+            course_spread_rad: 0.0,
         }
     }
 

@@ -24,7 +24,7 @@
 //! assert_eq!(land.distance_m(DVec2::new(0.0, 2000.0)), 1000.0);
 //! let north = Segment {
 //!     start_m: DVec2::ZERO, end_m: DVec2::new(0.0, 6000.0), margin_m: 0.0,
-//!     start_elapsed_s: 0.0, duration_s: 1000.0, course_rad: 0.0,
+//!     start_elapsed_s: 0.0, duration_s: 1000.0, course_rad: 0.0, course_spread_rad: 0.0,
 //! };
 //! assert_eq!(land.check_segment(&north), Err(ConstraintViolation::Land));
 //! assert!(!land.admits_point(DVec2::new(0.0, 2900.0)));

@@ -60,15 +60,23 @@ impl Constraint for SchemeConstraint {
         if self.scheme.is_empty() {
             return Ok(());
         }
-        self.scheme
-            .check_segment(
-                &self.uses,
-                segment.start_m,
-                segment.end_m,
-                segment.margin_m,
-                segment.course_rad,
-            )
-            .map_err(|_| ConstraintViolation::TrafficLane)
+        // Every heading along the piece (a chord of a turn sweeps
+        // `course_spread_rad` either way of its course): the judge of rule
+        // 10 samples the heading anywhere in a lane.
+        let spread_rad = segment.course_spread_rad;
+        let headings = [0.0, -spread_rad, spread_rad];
+        let count = if spread_rad > 0.0 { 3 } else { 1 };
+        headings[..count].iter().try_for_each(|offset_rad| {
+            self.scheme
+                .check_segment(
+                    &self.uses,
+                    segment.start_m,
+                    segment.end_m,
+                    segment.margin_m,
+                    segment.course_rad + offset_rad,
+                )
+                .map_err(|_| ConstraintViolation::TrafficLane)
+        })
     }
 
     /// Every point: a lane or a zone may be crossed.
@@ -97,6 +105,7 @@ mod tests {
             start_elapsed_s: 0.0,
             duration_s: 10.0,
             course_rad: course_deg.to_radians(),
+            course_spread_rad: 0.0,
         }
     }
 
@@ -125,6 +134,17 @@ mod tests {
             constraint.check_segment(&segment(45.0)),
             Err(ConstraintViolation::TrafficLane)
         );
+        // A chord of a turn whose middle heading (12°) is square within
+        // tolerance (15°) but which sweeps from 8° to 16°: the heading at
+        // its end is not, and an observer sampling it in the lane sees it.
+        let chord = segment(12.0).with_headings(8f64.to_radians(), 16f64.to_radians());
+        assert!((chord.course_spread_rad.to_degrees() - 4.0).abs() < 1e-9);
+        assert_eq!(
+            constraint.check_segment(&chord),
+            Err(ConstraintViolation::TrafficLane)
+        );
+        let inside = segment(10.0).with_headings(6f64.to_radians(), 14f64.to_radians());
+        assert!(constraint.check_segment(&inside).is_ok());
         assert!(constraint.admits_point(DVec2::ZERO));
         assert!(
             SchemeConstraint::default()

@@ -387,8 +387,6 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         let in_reach = worth_pruning(self, leg)
             .then(|| self.within_reach(leg, start_elapsed_s, &state.latches, &state.alterations));
         let checker = self.only_within(in_reach.as_deref().unwrap_or(&[]));
-        let piece_error_m = leg.piece_error_m();
-        let timing_error_m = leg.timing_error_m();
         // Before the leg: on the first leg of a plan that starts in a turn,
         // the course held before that turn (the closed loop's history);
         // otherwise the leg's own start course (a turn between legs begins
@@ -450,6 +448,8 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         // speed stay the same, and the targets no risk can reach while the
         // velocities hold (decision 54).
         let mut memo = LegMemo::default();
+        // The heading at the last piece's end (on a turn, part way round).
+        let mut heading_rad = leg.start_course_rad;
         for piece in leg.pieces(self.config().step_m) {
             *on_turn = piece.turning;
             let candidate = Move {
@@ -460,9 +460,10 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 duration_s: piece.duration_s,
             };
             // The user's constraint (land, a no-go area, a lane) on the
-            // curve sailed: a chord of a turn is up to the chord error off
-            // the arc, a piece changing speed up to the timing error.
-            let segment = Segment::of_piece(&piece, start_elapsed_s, piece_error_m, timing_error_m);
+            // curve sailed, at every heading of a chord of the turn.
+            let (segment, course_rad) =
+                Segment::of_leg_piece(leg, &piece, start_elapsed_s, heading_rad);
+            heading_rad = course_rad;
             self.constraint()
                 .check_segment(&segment)
                 .map_err(RejectionCause::Constraint)?;
@@ -503,15 +504,9 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
             let end_elapsed_s = candidate.start_elapsed_s + candidate.duration_s;
-            // The heading at the piece's end (on a turn, part way round), and
-            // the course an observer still sees steady: the one before this
+            // The course an observer still sees steady: the one before this
             // leg's turn (or, on a plan's first leg, before the turn it
             // starts in) while that turn is within the window.
-            let course_rad = if piece.turning {
-                leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad
-            } else {
-                piece.course_rad
-            };
             let turn_end_s = (start_elapsed_s + leg.turn_duration_s()).min(end_elapsed_s);
             let steady_course_rad = steady_through_turn(
                 [before_s, start_elapsed_s, turn_end_s, end_elapsed_s],

@@ -120,6 +120,7 @@ proptest! {
                             start_elapsed_s: 0.0,
                             duration_s: piece.duration_s,
                             course_rad: piece.course_rad,
+                            course_spread_rad: 0.0,
                         }
                         .distance_to_m(circle.centre_m);
                         prop_assert!(distance_m >= radius_m - 1e-6, "{distance_m} m, error {error_m} m");

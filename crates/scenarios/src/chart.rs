@@ -443,6 +443,7 @@ mod tests {
             start_elapsed_s: 0.0,
             duration_s: 1600.0,
             course_rad: 0.0,
+            course_spread_rad: 0.0,
         };
         assert_eq!(
             constraint.check_segment(&leg(0.0)),

@@ -74,3 +74,27 @@ fn generated_crossings_keep_the_heading_rule_and_stay_out_of_the_zone() {
         }
     }
 }
+
+/// Two-way crossing 32 (seed 7, constant targets): ownship began its
+/// return to port while still in the second lane, and the judge, sampling
+/// the heading at the lane's edge, saw 16.1° off square where the chord it
+/// was on had a middle heading within the 15° allowed. The planner now
+/// judges every heading a chord of a turn sweeps through in a lane.
+#[test]
+fn a_turn_begun_in_a_lane_is_square_at_every_heading_sampled() {
+    let spec = TssSpec {
+        direction: TssDirection::TwoWay,
+        ..TssSpec::with_density(1.0).with_behaviour(TargetBehaviour::Constant)
+    };
+    let scenario = tss(&spec, 7, 32).expect("generates");
+    let record = simulate(&scenario, scenario.seed.unwrap_or(1)).expect("runs");
+    let evaluation = evaluate(&scenario, &record);
+    let table = evaluation.table();
+    assert!(evaluation.reached_goal && !evaluation.collision, "{table}");
+    assert_eq!(evaluation.rule10.crossings.len(), 2, "{table}");
+    assert_eq!(
+        evaluation.rule10.count(Rule10Clause::CrossingNotSquare),
+        0,
+        "{table}"
+    );
+}

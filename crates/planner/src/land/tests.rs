@@ -28,6 +28,7 @@ fn segment(start_m: DVec2, end_m: DVec2, margin_m: f64) -> Segment {
         start_elapsed_s: 0.0,
         duration_s: 1.0,
         course_rad: 0.0,
+        course_spread_rad: 0.0,
     }
 }
 
