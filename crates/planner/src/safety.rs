@@ -44,6 +44,7 @@ mod velocities;
 use distance::beyond_reach;
 pub use distance::min_distance_over;
 pub use velocities::StateVelocities;
+pub(crate) use velocities::known_velocity;
 
 /// One candidate move out of a parent node.
 #[derive(Debug, Clone, Copy)]
@@ -151,9 +152,7 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         target: &VesselState,
         memo: &mut LegMemo,
     ) -> DVec2 {
-        self.state_velocities
-            .get(index)
-            .and_then(|known| known.velocity_of(target))
+        known_velocity(self.state_velocities, index, target)
             .unwrap_or_else(|| memo.target_velocity(index, target))
     }
 

@@ -58,6 +58,16 @@ impl StateVelocities {
     }
 }
 
+/// Target `index`'s velocity in state `target` from `known` (one entry per
+/// target, [`StateVelocities::of`]; may be empty), where it applies.
+pub(crate) fn known_velocity(
+    known: &[StateVelocities],
+    index: usize,
+    target: &VesselState,
+) -> Option<DVec2> {
+    known.get(index).and_then(|known| known.velocity_of(target))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,7 +3,7 @@
 //! velocities hold.
 
 use super::{Constraint, DVec2, LinearTrack, SafetyChecker, VesselState, no_risk_while_steady};
-use crate::safety::StateVelocities;
+use crate::safety::{StateVelocities, known_velocity};
 
 impl<C: Constraint> SafetyChecker<'_, C> {
     /// The same checker without the memo of decision 54: each piece of a
@@ -144,11 +144,7 @@ impl Along<'_> {
     /// `target`'s velocity: from the velocities worked out once where they
     /// apply, else [`velocity_of`].
     pub(super) fn velocity(&mut self, index: usize, target: &VesselState) -> DVec2 {
-        if let Some(velocity_mps) = self
-            .known
-            .get(index)
-            .and_then(|known| known.velocity_of(target))
-        {
+        if let Some(velocity_mps) = known_velocity(self.known, index, target) {
             return velocity_mps;
         }
         match self.memo.velocities.get_mut(index) {
