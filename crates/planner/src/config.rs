@@ -166,6 +166,69 @@ pub enum SearchEffort {
     Full,
     /// Only the first, goal-biased phase of every attempt (restarts kept).
     FirstPhase,
+    /// The search from the root; the tree of [`Full`](Self::Full) only
+    /// where that search was refused by the planner's user constraint
+    /// (land, a no-go area, a lane: obstacles its one- and two-alteration
+    /// manoeuvres cannot get round), else none (decision 66). With
+    /// instantaneous turns, which have no search from the root, as `Full`.
+    /// What a closed loop asks of the stricter levels of its graded
+    /// fallback.
+    FullWhereConstrained,
+    /// As [`FullWhereConstrained`](Self::FullWhereConstrained), with the
+    /// tree of [`FirstPhase`](Self::FirstPhase).
+    FirstPhaseWhereConstrained,
+}
+
+impl SearchEffort {
+    /// How many phases of each attempt the tree grows.
+    ///
+    /// ```
+    /// use vorrt_planner::SearchEffort;
+    /// assert_eq!(SearchEffort::Full.phases(), 2);
+    /// assert_eq!(SearchEffort::FirstPhaseWhereConstrained.phases(), 1);
+    /// ```
+    #[must_use]
+    pub fn phases(self) -> usize {
+        match self {
+            Self::Full | Self::FullWhereConstrained => 2,
+            Self::FirstPhase | Self::FirstPhaseWhereConstrained => 1,
+        }
+    }
+
+    /// Whether the tree is grown only where the search from the root was
+    /// refused by the user constraint.
+    ///
+    /// ```
+    /// use vorrt_planner::SearchEffort;
+    /// assert!(SearchEffort::FullWhereConstrained.tree_only_where_constrained());
+    /// assert!(!SearchEffort::FirstPhase.tree_only_where_constrained());
+    /// ```
+    #[must_use]
+    pub fn tree_only_where_constrained(self) -> bool {
+        matches!(
+            self,
+            Self::FullWhereConstrained | Self::FirstPhaseWhereConstrained
+        )
+    }
+
+    /// The effort whose search asks the same moves as this one's, in the
+    /// same order, and then goes on where this one may stop: itself, or for
+    /// an effort that grows its tree only where constrained, the one that
+    /// always grows it (a search that skips the tree stops where the other
+    /// grows it; one that grows it is the other's).
+    ///
+    /// ```
+    /// use vorrt_planner::SearchEffort;
+    /// assert_eq!(SearchEffort::FullWhereConstrained.always_growing(), SearchEffort::Full);
+    /// assert_eq!(SearchEffort::FirstPhase.always_growing(), SearchEffort::FirstPhase);
+    /// ```
+    #[must_use]
+    pub fn always_growing(self) -> Self {
+        match self {
+            Self::Full | Self::FullWhereConstrained => Self::Full,
+            Self::FirstPhase | Self::FirstPhaseWhereConstrained => Self::FirstPhase,
+        }
+    }
 }
 
 /// Every knob of the VORRT planner.

@@ -80,6 +80,11 @@ impl FailedSearch {
     /// one's: the same problem, seed, effort and settings but a compliance
     /// level at most as strict, and no time budget (a search cut short by
     /// the clock asks what the clock allows).
+    ///
+    /// A search that grows its tree only where constrained asks what the
+    /// search that always grows it asks, and stops where it would grow the
+    /// tree ([`SearchEffort::always_growing`]): the other search replays it
+    /// too, and judges afresh from where it stopped (decision 66).
     pub(crate) fn replayable_by(
         &self,
         problem: &PlanningProblem,
@@ -87,8 +92,13 @@ impl FailedSearch {
         seed: u64,
         effort: SearchEffort,
     ) -> bool {
+        let as_asked = if effort == self.effort.always_growing() {
+            self.effort
+        } else {
+            effort
+        };
         config.time_budget_s.is_none()
-            && self.same_search_at_weaker_level(problem, config, seed, effort)
+            && self.same_search_at_weaker_level(problem, config, seed, as_asked)
     }
 }
 

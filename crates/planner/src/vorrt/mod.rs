@@ -13,11 +13,11 @@
 //! When both phases fail the tree is grown again from the root, up to
 //! `max_restarts` times, then the planner says why it found no safe path.
 
-use crate::config::{PlannerConfig, SearchEffort};
+use crate::config::{PlannerConfig, SearchEffort, Turning};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::error::PlannerError;
 use crate::evasion::{EvasionSearch, EvasiveManeuver, evasive_leg_constrained};
-use crate::plan::{Plan, PlanStatistics, RejectionCounts};
+use crate::plan::{Plan, PlanStatistics, RejectionCause, RejectionCounts};
 use crate::problem::PlanningProblem;
 use crate::replay::{FailedSearch, Replaying, Verdicts};
 use crate::safety::{SafetyChecker, StateVelocities};
@@ -35,6 +35,20 @@ use vorrt_jfs::{InstantTurn, Leg, LinearTrack, MotionModel, TargetState};
 
 mod clearances;
 mod extract;
+
+/// Whether a search of `effort` that failed from the root, having refused
+/// `refused`, stops there (decision 66): traffic alone refused the
+/// manoeuvres from the root, and an effort that grows its tree only where
+/// the user constraint refused some. With instantaneous turns there are no
+/// manoeuvres from the root, and the tree is the search.
+fn grows_no_tree(config: &PlannerConfig, effort: SearchEffort, refused: &RejectionCounts) -> bool {
+    effort.tree_only_where_constrained()
+        && !matches!(config.turning, Turning::Instant)
+        && !refused
+            .by_cause()
+            .iter()
+            .any(|&(cause, count)| count > 0 && matches!(cause, RejectionCause::Constraint(_)))
+}
 
 /// How often (in samples) the wall clock is read when a budget is set.
 const CLOCK_EVERY_SAMPLES: u64 = 32;
@@ -136,7 +150,7 @@ impl<C: Constraint> Planner<C> {
     /// still holds ([`check_legs_with`]).
     ///
     /// # Errors
-    /// The first [`RejectionCause`](crate::RejectionCause) a leg runs into.
+    /// The first [`RejectionCause`] a leg runs into.
     pub fn check_legs(
         &self,
         problem: &PlanningProblem,
@@ -287,12 +301,7 @@ impl<C: Constraint> Planner<C> {
         // The searches without samples end within the time budget too.
         let deadline = deadline_of(&config, started);
         let own = problem.ownship;
-        self.tracks.clear();
-        self.tracks
-            .extend(problem.targets.iter().map(TargetState::track));
-        self.track_velocities.clear();
-        self.track_velocities
-            .extend(self.tracks.iter().map(StateVelocities::of));
+        self.load_tracks(problem);
         let targets = self.tracks.len();
         let (root_latches, root_alterations) = self.root_encounters(problem);
         let margin = DVec2::splat(config.sampling_margin_m);
@@ -307,9 +316,9 @@ impl<C: Constraint> Planner<C> {
         // Whether the search from the root (its whole ladder) has failed.
         let mut root_searched = false;
         // A retry (first phase only) is a draw where most searches fail.
-        let probe = match effort {
-            SearchEffort::FirstPhase => Probe::FloorFirst,
-            SearchEffort::Full => Probe::PreferredFirst,
+        let probe = match effort.phases() {
+            1 => Probe::FloorFirst,
+            _ => Probe::PreferredFirst,
         };
 
         for attempt in 0..=config.max_restarts {
@@ -339,6 +348,9 @@ impl<C: Constraint> Planner<C> {
                     // root failed: a branch's simplification, which starts
                     // with them, need not validate them again.
                     None => root_searched = true,
+                }
+                if grows_no_tree(&config, effort, refused) {
+                    break;
                 }
             }
             let reached = if own.position_m == problem.goal_m {
@@ -372,6 +384,17 @@ impl<C: Constraint> Planner<C> {
         Err(PlannerError::NoSafePath {
             statistics: Box::new(statistics),
         })
+    }
+
+    /// Each target's track and its state velocities, worked out once per
+    /// call.
+    fn load_tracks(&mut self, problem: &PlanningProblem) {
+        self.tracks.clear();
+        self.tracks
+            .extend(problem.targets.iter().map(TargetState::track));
+        self.track_velocities.clear();
+        self.track_velocities
+            .extend(self.tracks.iter().map(StateVelocities::of));
     }
 
     /// The encounters in force at the root, each updated from the one a
@@ -420,10 +443,7 @@ impl<C: Constraint> Planner<C> {
         statistics: &mut PlanStatistics,
         started: Instant,
     ) -> Result<Option<u32>, PlannerError> {
-        let phases = match effort {
-            SearchEffort::Full => 2,
-            SearchEffort::FirstPhase => 1,
-        };
+        let phases = effort.phases();
         for goal_bias in [self.config.goal_bias, self.config.phase_two_goal_bias]
             .into_iter()
             .take(phases)

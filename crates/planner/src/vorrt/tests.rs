@@ -90,6 +90,121 @@ fn first_phase_effort_skips_phase_two_and_keeps_the_restarts() {
     );
 }
 
+/// A circle ownship must keep out of.
+struct NoGoCircle {
+    centre_m: DVec2,
+    radius_m: f64,
+}
+
+impl Constraint for NoGoCircle {
+    fn check_segment(
+        &self,
+        segment: &crate::constraint::Segment,
+    ) -> Result<(), crate::constraint::ConstraintViolation> {
+        if segment.distance_to_m(self.centre_m) < self.radius_m + segment.margin_m {
+            Err(crate::constraint::ConstraintViolation::NoGoArea)
+        } else {
+            Ok(())
+        }
+    }
+
+    fn admits_point(&self, point_m: DVec2) -> bool {
+        point_m.distance(self.centre_m) >= self.radius_m
+    }
+}
+
+#[test]
+fn a_search_where_constrained_grows_a_tree_only_where_the_constraint_refused() {
+    let (problem, config) = blocked();
+    // Traffic alone refuses the manoeuvres from the root: no tree.
+    let mut open = Planner::new(config).expect("valid");
+    assert_eq!(
+        samples_of(open.plan_with(&problem, 3, SearchEffort::FullWhereConstrained)),
+        0
+    );
+    assert_eq!(
+        samples_of(open.plan_with(&problem, 3, SearchEffort::FirstPhaseWhereConstrained)),
+        0
+    );
+    assert_eq!(samples_of(open.plan(&problem, 3)), 2 * 2 * 40);
+    // With instantaneous turns there is no search from the root: the tree
+    // is the search.
+    let instant = PlannerConfig {
+        turning: Turning::Instant,
+        ..config
+    };
+    let mut paper = Planner::new(instant).expect("valid");
+    assert_eq!(
+        samples_of(paper.plan_with(&problem, 3, SearchEffort::FullWhereConstrained)),
+        2 * 2 * 40
+    );
+    // A no-go circle beside the route refuses some of them too: the tree
+    // is the one the effort that always grows it grows.
+    let circle = || NoGoCircle {
+        centre_m: DVec2::new(-600.0, 1500.0),
+        radius_m: 400.0,
+    };
+    let mut near_land = Planner::with_constraint(config, circle()).expect("valid");
+    let grown = near_land.plan_with(&problem, 3, SearchEffort::FullWhereConstrained);
+    let rejections = grown
+        .as_ref()
+        .expect_err("blocked")
+        .statistics()
+        .expect("statistics")
+        .rejections;
+    assert!(
+        rejections.get(RejectionCause::Constraint(
+            crate::constraint::ConstraintViolation::NoGoArea
+        )) > 0
+    );
+    assert_eq!(samples_of(grown), 2 * 2 * 40);
+    assert_eq!(
+        samples_of(near_land.plan_with(&problem, 3, SearchEffort::FirstPhaseWhereConstrained)),
+        2 * 40
+    );
+}
+
+#[test]
+fn a_full_search_replays_a_stricter_one_that_grew_no_tree() {
+    let (problem, config) = crossing_onto_a_blocked_goal();
+    let mut strict = Planner::new(config).expect("valid");
+    assert!(
+        strict
+            .plan_with(&problem, 3, SearchEffort::FullWhereConstrained)
+            .is_err()
+    );
+    let weaker = PlannerConfig {
+        compliance: Compliance::SafetyOnly,
+        ..config
+    };
+    let statistics = |result: Result<Plan, PlannerError>| {
+        *result
+            .expect_err("blocked")
+            .statistics()
+            .expect("statistics")
+    };
+    let alone = statistics(Planner::new(weaker).expect("valid").plan(&problem, 3));
+    let mut after = Planner::new(weaker).expect("valid");
+    let replayed = statistics(after.plan_after(&problem, 3, SearchEffort::Full, &strict));
+    // The search that always grows the tree, bit for bit, for less judging.
+    assert_eq!(alone.samples, replayed.samples);
+    assert_eq!(alone.nodes, replayed.nodes);
+    assert_eq!(alone.rejections, replayed.rejections);
+    assert!(after.verdicts_replayed() > 0);
+    // Only that way round: an earlier search that always grew its tree is
+    // not replayed by one that may not (the graded fallback asks the
+    // lighter search first).
+    let mut full_first = Planner::new(config).expect("valid");
+    assert!(full_first.plan(&problem, 3).is_err());
+    let mut lighter = Planner::new(weaker).expect("valid");
+    assert!(
+        lighter
+            .plan_after(&problem, 3, SearchEffort::FullWhereConstrained, &full_first)
+            .is_err()
+    );
+    assert_eq!(lighter.verdicts_replayed(), 0);
+}
+
 /// A crossing from starboard whose goal lies beyond a vessel lying stopped
 /// on it: every level fails, the full one with refusals of every kind.
 fn crossing_onto_a_blocked_goal() -> (PlanningProblem, PlannerConfig) {

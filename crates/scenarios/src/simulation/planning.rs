@@ -305,12 +305,14 @@ fn search<C: Constraint>(
     let mut failed: Option<usize> = None;
     for index in 0..planners.len() {
         let compliance = planners[index].config().compliance;
-        // A retry's cheaper draw is for compliance: the last level, safety
-        // alone, always searches in full.
-        let effort = if call.why == PlanTrigger::Retry && compliance.relaxed().is_some() {
-            SearchEffort::FirstPhase
-        } else {
-            SearchEffort::Full
+        // The stricter levels grow a tree only where the user constraint
+        // refused the manoeuvres from the root (decision 66), a retry's
+        // only its first phase; the last level, safety alone, always
+        // searches in full.
+        let effort = match (compliance.relaxed(), call.why) {
+            (None, _) => SearchEffort::Full,
+            (Some(_), PlanTrigger::Retry) => SearchEffort::FirstPhaseWhereConstrained,
+            (Some(_), _) => SearchEffort::FullWhereConstrained,
         };
         if failed.is_some_and(|failed| {
             planners[failed].would_repeat(problem, planners[index].config(), call.seed, effort)

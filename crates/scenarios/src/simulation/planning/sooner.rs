@@ -107,7 +107,10 @@ pub(in crate::simulation) fn plan_if_sooner<C: Constraint>(
         return kept(None);
     }
     let started = Instant::now();
-    let Ok(plan) = planner.plan_with(problem, call.seed, SearchEffort::FirstPhase) else {
+    // A stricter level's search (decision 66): the tree only where the
+    // user constraint refused the manoeuvres from the root.
+    let Ok(plan) = planner.plan_with(problem, call.seed, SearchEffort::FirstPhaseWhereConstrained)
+    else {
         return kept(Some(started));
     };
     if arrives_s(&plan) > in_force_s - PAST_AND_CLEAR_GAIN_S {
