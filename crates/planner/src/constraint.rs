@@ -198,7 +198,7 @@ impl Segment {
             leg.timing_error_m(),
         );
         if piece.turning {
-            let end_rad = leg.pose_at(piece.elapsed_s + piece.duration_s).course_rad;
+            let end_rad = leg.course_at(piece.elapsed_s + piece.duration_s);
             (segment.with_headings(start_heading_rad, end_rad), end_rad)
         } else {
             (segment, piece.course_rad)

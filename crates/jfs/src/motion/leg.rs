@@ -363,13 +363,25 @@ impl Leg {
 
     /// The position after turning through `swept_rad` (`0..=|turn_rad|`).
     pub(super) fn on_arc(&self, swept_rad: f64) -> DVec2 {
+        self.on_arc_about(self.arc_centre_m(), swept_rad)
+    }
+
+    /// The centre of the turn's arc (for no turn, or an instantaneous one,
+    /// a point [`on_arc_about`](Self::on_arc_about) never uses).
+    pub(super) fn arc_centre_m(&self) -> DVec2 {
+        let side = self.turn_rad.signum();
+        self.start_m + side * self.turn_radius_m * starboard_unit(self.start_course_rad)
+    }
+
+    /// [`on_arc`](Self::on_arc) with the arc's centre given
+    /// ([`arc_centre_m`](Self::arc_centre_m), worked out once by a caller
+    /// that asks for many points: the same points).
+    pub(super) fn on_arc_about(&self, centre_m: DVec2, swept_rad: f64) -> DVec2 {
         if self.turn_radius_m == 0.0 || swept_rad == 0.0 {
             return self.start_m;
         }
         let side = self.turn_rad.signum();
-        let centre =
-            self.start_m + side * self.turn_radius_m * starboard_unit(self.start_course_rad);
-        centre
+        centre_m
             - side * self.turn_radius_m * starboard_unit(self.start_course_rad + side * swept_rad)
     }
 
@@ -386,12 +398,24 @@ impl Leg {
     /// vector of its course given (worked out once by a caller that asks
     /// for many poses: the same values, so the same poses).
     pub(super) fn pose_along_from(&self, distance_m: f64, turn_end_m: DVec2, unit: DVec2) -> Pose {
+        self.pose_along_about(self.arc_centre_m(), distance_m, turn_end_m, unit)
+    }
+
+    /// [`pose_along_from`](Self::pose_along_from) with the arc's centre
+    /// given too ([`arc_centre_m`](Self::arc_centre_m)): the same poses.
+    pub(super) fn pose_along_about(
+        &self,
+        centre_m: DVec2,
+        distance_m: f64,
+        turn_end_m: DVec2,
+        unit: DVec2,
+    ) -> Pose {
         let distance_m = distance_m.clamp(0.0, self.length_m());
         let arc_m = self.arc_m();
         if distance_m < arc_m {
             let swept = distance_m / self.turn_radius_m;
             Pose {
-                position_m: self.on_arc(swept),
+                position_m: self.on_arc_about(centre_m, swept),
                 course_rad: angle::normalize_2pi(
                     self.start_course_rad + self.turn_rad.signum() * swept,
                 ),
@@ -447,6 +471,39 @@ impl Leg {
             };
         }
         self.pose_along(self.distance_at(elapsed_s))
+    }
+
+    /// The course `elapsed_s` seconds into the leg: [`pose_at`](Self::pose_at)'s
+    /// course, bit for bit, without working out the position.
+    ///
+    /// ```
+    /// use vorrt_jfs::motion::{Leg, Pose};
+    /// use glam::DVec2;
+    /// let from = Pose { position_m: DVec2::ZERO, course_rad: 0.0 };
+    /// let leg = Leg::turning_onto(from, 1.0, 400.0, 6.0, 2000.0).from_speed(3.0, 0.05);
+    /// for elapsed_s in [0.0, 20.0, 60.0, 500.0] {
+    ///     assert_eq!(leg.course_at(elapsed_s), leg.pose_at(elapsed_s).course_rad);
+    /// }
+    /// ```
+    #[must_use]
+    pub fn course_at(&self, elapsed_s: f64) -> f64 {
+        let on_turn = |swept_rad: f64| {
+            angle::normalize_2pi(self.start_course_rad + self.turn_rad.signum() * swept_rad)
+        };
+        if self.speed_change.is_none() {
+            let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
+            return if elapsed_s < self.turn_duration_s() {
+                on_turn(elapsed_s * self.speed_mps / self.turn_radius_m)
+            } else {
+                self.course_rad
+            };
+        }
+        let distance_m = self.distance_at(elapsed_s).clamp(0.0, self.length_m());
+        if distance_m < self.arc_m() {
+            on_turn(distance_m / self.turn_radius_m)
+        } else {
+            self.course_rad
+        }
     }
 
     /// The rest of the leg from `elapsed_s` seconds in: the same curve and

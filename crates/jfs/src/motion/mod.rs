@@ -27,9 +27,11 @@ use vorrt_geometry::angle;
 
 mod leg;
 mod pieces;
+mod poses;
 
 pub use leg::{Leg, SpeedChange};
 pub use pieces::Piece;
+pub use poses::LegPoses;
 
 /// A planned turn's radius in ship lengths when none is given: IMO MSC.137(76)
 /// caps the hard-over tactical diameter at 5 lengths (radius 2.5 L) and

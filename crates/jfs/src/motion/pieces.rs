@@ -93,9 +93,11 @@ impl Leg {
             change_s,
             change_m: self.speed_change_m(),
             from_m: 0.0,
+            centre_m: self.arc_centre_m(),
             turn_end_m: self.turn_end_m(),
             unit: angle::course_to_unit(self.course_rad),
             last_to: None,
+            last_chord_to: None,
         }
     }
 }
@@ -124,6 +126,11 @@ pub(super) struct Pieces<'a> {
     pub(super) unit: DVec2,
     /// Where the last piece ended: (metres along the leg, position).
     pub(super) last_to: Option<(f64, DVec2)>,
+    /// The centre of the turn's arc (`Leg::arc_centre_m`), worked out once.
+    pub(super) centre_m: DVec2,
+    /// The index of the last chord cut at one speed and where it ended: the
+    /// next chord starts there (the same point, worked out once).
+    pub(super) last_chord_to: Option<(usize, DVec2)>,
 }
 
 impl Pieces<'_> {
@@ -168,7 +175,7 @@ impl Pieces<'_> {
         clippy::cast_precision_loss,
         reason = "piece counts and indices are small, so exact in f64"
     )]
-    fn at_one_speed(&self, index: usize) -> Option<Piece> {
+    fn at_one_speed(&mut self, index: usize) -> Option<Piece> {
         let leg = self.leg;
         let (chord_count, run_count) = (self.chords.1, self.runs.1);
         if index >= chord_count + run_count {
@@ -178,8 +185,15 @@ impl Pieces<'_> {
         let turn_s = leg.turn_duration_s();
         if index < chord_count {
             let chord_s = turn_s / chord_count as f64;
-            let from = leg.on_arc(turn * index as f64 / chord_count as f64);
-            let to = leg.on_arc(turn * (index + 1) as f64 / chord_count as f64);
+            let from = match self.last_chord_to {
+                Some((last, to_m)) if last + 1 == index => to_m,
+                _ => leg.on_arc_about(self.centre_m, turn * index as f64 / chord_count as f64),
+            };
+            let to = leg.on_arc_about(
+                self.centre_m,
+                turn * (index + 1) as f64 / chord_count as f64,
+            );
+            self.last_chord_to = Some((index, to));
             let course_rad = angle::normalize_2pi(
                 leg.start_course_rad
                     + leg.turn_rad.signum() * turn * (index as f64 + 0.5) / chord_count as f64,
@@ -238,7 +252,7 @@ impl Iterator for Pieces<'_> {
         let start_s = leg.time_at_distance(from_m);
         let duration_s = leg.time_at_distance(to_m) - start_s;
         let along = |distance_m: f64| {
-            leg.pose_along_from(distance_m, self.turn_end_m, self.unit)
+            leg.pose_along_about(self.centre_m, distance_m, self.turn_end_m, self.unit)
                 .position_m
         };
         // A piece starts where the last one ended.

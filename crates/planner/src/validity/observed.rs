@@ -17,6 +17,7 @@ use glam::DVec2;
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, STEADY_TURN_SEARCH_S, steady_course_rad_of};
 use vorrt_geometry::angle;
 use vorrt_jfs::Leg;
+use vorrt_jfs::motion::LegPoses;
 
 /// How often the observer samples ownship's track, seconds: the step of
 /// the campaigns' closed loop (`vorrt batch`, 5 s).
@@ -25,9 +26,9 @@ pub(crate) const OBSERVED_STEP_S: f64 = 5.0;
 /// Ownship's position `elapsed_s` after `leg`'s start; before it, straight
 /// back along the leg's start course at its start speed (the course held
 /// before the leg).
-fn position_at(leg: &Leg, elapsed_s: f64) -> DVec2 {
+fn position_at(leg: &Leg, poses: &LegPoses, elapsed_s: f64) -> DVec2 {
     if elapsed_s >= 0.0 {
-        leg.pose_at(elapsed_s).position_m
+        poses.pose_at(elapsed_s).position_m
     } else {
         leg.start_m + angle::velocity(leg.start_course_rad, leg.speed_at(0.0)) * elapsed_s
     }
@@ -35,12 +36,13 @@ fn position_at(leg: &Leg, elapsed_s: f64) -> DVec2 {
 
 /// Ownship's course over ground `elapsed_s` after `leg`'s start, over the
 /// last observation window ([`STEADY_COURSE_WINDOW_S`]).
-fn course_over_ground_rad(leg: &Leg, elapsed_s: f64) -> f64 {
-    let chord = position_at(leg, elapsed_s) - position_at(leg, elapsed_s - STEADY_COURSE_WINDOW_S);
+fn course_over_ground_rad(leg: &Leg, poses: &LegPoses, elapsed_s: f64) -> f64 {
+    let chord = position_at(leg, poses, elapsed_s)
+        - position_at(leg, poses, elapsed_s - STEADY_COURSE_WINDOW_S);
     if chord.length_squared() > 0.0 {
         angle::unit_to_course(chord.normalize())
     } else {
-        leg.pose_at(elapsed_s).course_rad
+        leg.course_at(elapsed_s)
     }
 }
 
@@ -52,7 +54,9 @@ fn course_over_ground_rad(leg: &Leg, elapsed_s: f64) -> f64 {
 /// Before that the course before is the leg's start course (the course
 /// held before it), which the caller judges from already.
 pub(crate) fn observed_turn_rad(leg: &Leg, elapsed_s: f64) -> (f64, Option<f64>) {
-    let now_rad = course_over_ground_rad(leg, elapsed_s);
+    // The leg's poses, asked at up to 146 times (decision 62's samples).
+    let poses = LegPoses::new(leg);
+    let now_rad = course_over_ground_rad(leg, &poses, elapsed_s);
     // The search looks back a window, then through the turn at most
     // `STEADY_TURN_SEARCH_S`, and a course over ground lags by up to a
     // window more: within that span of the leg's start it reaches the
@@ -80,7 +84,7 @@ pub(crate) fn observed_turn_rad(leg: &Leg, elapsed_s: f64) -> (f64, Option<f64>)
     let before_rad = steady_course_rad_of(
         steps + 1,
         time_s,
-        |index| course_over_ground_rad(leg, time_s(index)),
+        |index| course_over_ground_rad(leg, &poses, time_s(index)),
         STEADY_COURSE_WINDOW_S,
     );
     (now_rad, before_rad)
