@@ -55,6 +55,27 @@ pub struct TrackObservation {
     pub unreported: Vec<Unreported>,
 }
 
+impl TrackObservation {
+    /// A track of exact positions, as a closed-loop run records them: no
+    /// jitter in its fixes (`position_noise_m` 0, which the estimate from
+    /// such a track's positions gives too, for less work), under way, every
+    /// position a report.
+    ///
+    /// ```
+    /// use vorrt_colregs::observed::TrackObservation;
+    /// let exact = TrackObservation::exact();
+    /// assert_eq!(exact.position_noise_m, Some(0.0));
+    /// assert!(exact.unreported.is_empty());
+    /// ```
+    #[must_use]
+    pub fn exact() -> Self {
+        Self {
+            position_noise_m: Some(0.0),
+            ..Self::default()
+        }
+    }
+}
+
 /// A recorded run: sample times, ownship's track and every target's, each
 /// track with one entry per sample time.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

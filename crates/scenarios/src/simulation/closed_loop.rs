@@ -16,6 +16,7 @@ use crate::scenario::{Behaviour, Scenario};
 use crate::scheme::scenario_constraint;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
+use vorrt_colregs::observed::TrackObservation;
 use vorrt_colregs::rules::{STEADY_COURSE_WINDOW_S, steady_course_rad};
 use vorrt_colregs::{EncounterLatch, VesselState};
 use vorrt_jfs::{OwnshipModel, TargetState};
@@ -337,7 +338,10 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             plans_kept: Vec::new(),
             config: *config,
             max_turn_rate_rad_s,
-            observations: Vec::new(),
+            // Ownship's track is exact; each target's as its motion says.
+            observations: std::iter::once(TrackObservation::exact())
+                .chain(motions.iter().map(|motion| motion.observation()))
+                .collect(),
             reached_goal: false,
             arrival_time_s: None,
         };

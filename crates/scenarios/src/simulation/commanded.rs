@@ -14,6 +14,7 @@ use crate::scenario::Scenario;
 use crate::validate::MAX_SPEED_KN;
 use glam::DVec2;
 use vorrt_colregs::VesselState;
+use vorrt_colregs::observed::TrackObservation;
 use vorrt_geometry::units;
 use vorrt_jfs::{MotionModel, OwnshipModel, Pose};
 use vorrt_planner::PlannerConfig;
@@ -104,7 +105,10 @@ impl CommandedRun {
                 .max_turn_rate_rad_s(own.length_m, own.speed_mps),
             reached_goal: false,
             arrival_time_s: None,
-            observations: Vec::new(),
+            // Ownship's track is exact; each target's as its motion says.
+            observations: std::iter::once(TrackObservation::exact())
+                .chain(targets.iter().map(|motion| motion.observation()))
+                .collect(),
         };
         let mut run = Self {
             // The one place a configuration becomes the model ownship

@@ -143,8 +143,10 @@ pub struct SimulationRecord {
     pub max_turn_rate_rad_s: Option<f64>,
     /// How each track was observed, ownship first, then the targets in
     /// order: the fixes' jitter and the reported navigational status, for
-    /// tracks recorded at sea (`vorrt judge`). Empty for a closed-loop run,
-    /// whose tracks are exact.
+    /// tracks recorded at sea (`vorrt judge`). A closed-loop run's tracks
+    /// are exact ([`TrackObservation::exact`](vorrt_colregs::observed::TrackObservation::exact)),
+    /// but a recorded target's, whose jitter is estimated; empty: every
+    /// track's estimated.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub observations: Vec<vorrt_colregs::observed::TrackObservation>,
     /// Whether ownship reached its goal.

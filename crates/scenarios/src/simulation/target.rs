@@ -5,6 +5,7 @@
 use crate::scenario::{Behaviour, COLREGS_TURN_DEG, NOISE_TIME_CONSTANT_S};
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};
+use vorrt_colregs::observed::TrackObservation;
 use vorrt_colregs::{
     Encounter, EncounterLatch, Role, RuleParameters, VesselState, has_passed, update_latch,
 };
@@ -53,6 +54,14 @@ pub trait TargetMotion: std::fmt::Debug + Send {
         encounter: Option<Encounter>,
         rules: &RuleParameters,
     ) -> TargetState;
+
+    /// How the target's track is observed in the run's record: exact
+    /// positions for a simulated motion (the default); a recorded track's
+    /// fixes carry the jitter of the recording, estimated from its
+    /// positions.
+    fn observation(&self) -> TrackObservation {
+        TrackObservation::exact()
+    }
 }
 
 /// A scenario's target, moved by its [`Behaviour`].
