@@ -363,3 +363,37 @@ fn a_stand_on_course_inside_a_velocity_obstacle_drifts_with_no_tree() {
         );
     }
 }
+
+#[test]
+fn a_closed_loop_run_records_its_tracks_as_exact_and_is_judged_as_if_estimated() {
+    let scenario = fixture("paper/multi_vessel.ron");
+    let record = simulate(&scenario, 1).expect("valid settings");
+    // Ownship first, then every target: simulated, so exact.
+    assert_eq!(record.observations.len(), 1 + scenario.targets.len());
+    assert!(
+        record
+            .observations
+            .iter()
+            .all(|observation| *observation == vorrt_colregs::observed::TrackObservation::exact())
+    );
+    // The jitter estimated from exact positions is none but for rounding,
+    // with the published window and thresholds: the same judgement.
+    let mut estimated = record.clone();
+    estimated.observations.clear();
+    let (mut exact, estimated) = (
+        evaluate(&scenario, &record),
+        evaluate(&scenario, &estimated),
+    );
+    for (known, guessed) in exact.noise.iter().zip(&estimated.noise) {
+        assert!(known.position_noise_m.to_bits() == 0 && guessed.position_noise_m < 1e-9);
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        assert!(same(known.window_s, guessed.window_s));
+        assert!(same(known.turn_tolerance_rad, guessed.turn_tolerance_rad));
+        assert!(same(
+            known.action_detection_rad,
+            guessed.action_detection_rad
+        ));
+    }
+    exact.noise.clone_from(&estimated.noise);
+    assert_eq!(exact, estimated);
+}

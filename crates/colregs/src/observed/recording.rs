@@ -58,8 +58,8 @@ pub struct TrackObservation {
 impl TrackObservation {
     /// A track of exact positions, as a closed-loop run records them: no
     /// jitter in its fixes (`position_noise_m` 0, which the estimate from
-    /// such a track's positions gives too, for less work), under way, every
-    /// position a report.
+    /// such a track's positions gives too but for 1e-12 m of rounding,
+    /// at more cost), under way, every position a report.
     ///
     /// ```
     /// use vorrt_colregs::observed::TrackObservation;

@@ -238,6 +238,15 @@ mod tests {
     }
 
     #[test]
+    fn its_fixes_are_not_taken_for_exact() {
+        let track = RecordedMotion::new(vec![at(10.0, 0.0, 0.0, 90.0, 2.0)]).expect("valid");
+        // Its jitter is estimated from its positions; a simulated motion's
+        // are exact.
+        assert_eq!(track.observation(), TrackObservation::default());
+        assert_ne!(track.observation(), TrackObservation::exact());
+    }
+
+    #[test]
     fn outside_its_times_it_is_dead_reckoned() {
         let track = RecordedMotion::new(vec![at(10.0, 0.0, 0.0, 90.0, 2.0)]).expect("valid");
         assert!((track.state_at(0.0).position_m - DVec2::new(-20.0, 0.0)).length() < 1e-9);
