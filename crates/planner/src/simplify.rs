@@ -307,7 +307,8 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
         let holds = alterations.holds(goal_m, || {
             model.turn_onto(pose, course_rad, hold_speed_mps, 0.0)
         });
-        let sail = |hold_m: f64| {
+        // `clear_only`: the hold is wanted only if it ends past and clear.
+        let sail = |hold_m: f64, clear_only: bool| {
             let hold = model
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
                 .from_speed(start_mps, speeds.change_mps2);
@@ -319,12 +320,14 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                 // This hold, and every longer one, sails farther than the best.
                 return HoldOutcome::Invalid;
             }
-            hold_and_return(model, validator, from, hold, factor, speeds, goal_m)
+            hold_and_return(
+                model, validator, from, hold, factor, speeds, goal_m, clear_only,
+            )
         };
         // The longest hold known to be valid whose return was refused.
         let mut refused_m: Option<f64> = None;
         for hold_m in holds {
-            match sail(hold_m) {
+            match sail(hold_m, best.is_some()) {
                 // Holding on is already invalid this far: longer holds are too.
                 HoldOutcome::Invalid => break,
                 HoldOutcome::Refused => refused_m = Some(hold_m),
@@ -346,7 +349,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                         let mut long_m = hold_m;
                         for _ in 0..RETURN_BISECTIONS {
                             let middle_m = 0.5 * (short_m + long_m);
-                            match sail(middle_m) {
+                            match sail(middle_m, true) {
                                 HoldOutcome::Found(sooner) if past_and_clear(&sooner[0].state) => {
                                     legs = sooner;
                                     long_m = middle_m;

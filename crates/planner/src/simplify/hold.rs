@@ -1,7 +1,7 @@
 //! One hold of the manoeuvre search and its return, and the grades the
 //! search prefers in order (decision 44).
 
-use super::{SimplifiedLeg, Speeds, reduction_held, return_to_goal};
+use super::{SimplifiedLeg, Speeds, past_and_clear, reduction_held, return_to_goal};
 use crate::validity::MotionValidator;
 use glam::DVec2;
 use vorrt_jfs::{Leg, MotionModel};
@@ -25,7 +25,14 @@ pub(super) enum HoldOutcome {
 }
 
 /// `hold` (at `factor` of the service speed) validated after `from`, then
-/// the return to the goal ([`return_to_goal`](super::return_to_goal)) from its end.
+/// the return to the goal ([`return_to_goal`](super::return_to_goal)) from its end. With
+/// `clear_only`, a return is wanted only from a hold that ends past and
+/// clear ([`past_and_clear`](super::past_and_clear)): from any other the
+/// hold is `Refused` without searching one (the caller would refuse it).
+#[expect(
+    clippy::too_many_arguments,
+    reason = "one hold of the manoeuvre search: where it starts, the leg, its speed and what is wanted"
+)]
 pub(super) fn hold_and_return<M: MotionModel, V: MotionValidator>(
     model: &M,
     validator: &V,
@@ -34,6 +41,7 @@ pub(super) fn hold_and_return<M: MotionModel, V: MotionValidator>(
     factor: f64,
     speeds: Speeds,
     goal_m: DVec2,
+    clear_only: bool,
 ) -> HoldOutcome {
     let mut after_hold = from.state.clone();
     if validator
@@ -42,7 +50,9 @@ pub(super) fn hold_and_return<M: MotionModel, V: MotionValidator>(
     {
         return HoldOutcome::Invalid;
     }
-    if factor < 1.0 && !reduction_held(&hold, &after_hold) {
+    if (factor < 1.0 && !reduction_held(&hold, &after_hold))
+        || (clear_only && !past_and_clear(&after_hold))
+    {
         return HoldOutcome::Refused;
     }
     let hold = SimplifiedLeg {

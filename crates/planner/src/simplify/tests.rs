@@ -283,3 +283,62 @@ fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
     assert!((back[0].leg.straight_m - SHORT_OF_HOLD_M[0]).abs() < 1e-6);
     assert!(back[1].leg.end_m().distance(goal_m) < 1e-6);
 }
+
+/// Accepts every leg and counts them.
+struct Counting {
+    judged: Cell<usize>,
+}
+
+impl MotionValidator for Counting {
+    fn validate(
+        &self,
+        _leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        self.judged.set(self.judged.get() + 1);
+        Ok(())
+    }
+}
+
+#[test]
+fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wanted() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let own = vorrt_colregs::VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
+    // A head-on encounter in force: ownship gives way, not yet past.
+    let giving_way = EncounterState {
+        latches: vec![Some(vorrt_colregs::EncounterLatch::new(
+            vorrt_colregs::Encounter::HeadOn,
+            &own,
+            0.0,
+        ))],
+        alterations: vec![0.0],
+    };
+    let from = SimplifiedLeg {
+        leg: Leg::straight(DVec2::ZERO, 0.0, 0.0, 6.0),
+        end_elapsed_s: 0.0,
+        state: giving_way,
+    };
+    let start = Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    let hold = || model.turn_onto(start, 35f64.to_radians(), 6.0, 1000.0);
+    let goal_m = DVec2::new(0.0, 5000.0);
+    let speeds = Speeds::constant(6.0);
+    let counting = Counting {
+        judged: Cell::new(0),
+    };
+    // Wanted only past and clear: the hold is judged, no return searched.
+    let outcome =
+        hold::hold_and_return(&model, &counting, &from, hold(), 1.0, speeds, goal_m, true);
+    assert!(matches!(outcome, hold::HoldOutcome::Refused));
+    assert_eq!(counting.judged.get(), 1);
+    // Otherwise the return is searched (here, the leg to the goal).
+    let outcome =
+        hold::hold_and_return(&model, &counting, &from, hold(), 1.0, speeds, goal_m, false);
+    assert!(matches!(outcome, hold::HoldOutcome::Found(ref legs) if legs.len() == 2));
+    assert_eq!(counting.judged.get(), 3);
+}
