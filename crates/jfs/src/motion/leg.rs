@@ -452,25 +452,51 @@ impl Leg {
     /// ```
     #[must_use]
     pub fn pose_at(&self, elapsed_s: f64) -> Pose {
+        self.pose_at_from(
+            elapsed_s,
+            || self.arc_centre_m(),
+            || self.turn_end_m(),
+            || angle::course_to_unit(self.course_rad),
+        )
+    }
+
+    /// [`pose_at`](Self::pose_at)'s one body, with the turn's centre
+    /// ([`arc_centre_m`](Self::arc_centre_m)), its end and the unit vector
+    /// of the settled course given, each asked for only where it is needed
+    /// (a caller that asks for many poses works them out once:
+    /// [`LegPoses`](super::LegPoses); the same poses).
+    pub(super) fn pose_at_from(
+        &self,
+        elapsed_s: f64,
+        centre_m: impl FnOnce() -> DVec2,
+        turn_end_m: impl FnOnce() -> DVec2,
+        unit: impl FnOnce() -> DVec2,
+    ) -> Pose {
         if self.speed_change.is_none() {
             let turn_s = self.turn_duration_s();
             let elapsed_s = elapsed_s.clamp(0.0, self.duration_s());
             return if elapsed_s < turn_s {
                 let swept = elapsed_s * self.speed_mps / self.turn_radius_m;
                 Pose {
-                    position_m: self.on_arc(swept),
+                    position_m: self.on_arc_about(centre_m(), swept),
                     course_rad: angle::normalize_2pi(
                         self.start_course_rad + self.turn_rad.signum() * swept,
                     ),
                 }
             } else {
+                // `velocity_mps` is the unit vector times the speed.
                 Pose {
-                    position_m: self.turn_end_m() + self.velocity_mps() * (elapsed_s - turn_s),
+                    position_m: turn_end_m() + unit() * self.speed_mps * (elapsed_s - turn_s),
                     course_rad: self.course_rad,
                 }
             };
         }
-        self.pose_along(self.distance_at(elapsed_s))
+        self.pose_along_about(
+            centre_m(),
+            self.distance_at(elapsed_s),
+            turn_end_m(),
+            unit(),
+        )
     }
 
     /// The course `elapsed_s` seconds into the leg: [`pose_at`](Self::pose_at)'s

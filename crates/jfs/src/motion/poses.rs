@@ -33,8 +33,6 @@ pub struct LegPoses<'a> {
     turn_end_m: DVec2,
     /// The unit vector of the settled course.
     unit: DVec2,
-    /// The velocity on the settled course at the settled speed.
-    velocity_mps: DVec2,
 }
 
 impl<'a> LegPoses<'a> {
@@ -42,44 +40,22 @@ impl<'a> LegPoses<'a> {
     #[must_use]
     pub fn new(leg: &'a Leg) -> Self {
         let centre_m = leg.arc_centre_m();
-        let unit = angle::course_to_unit(leg.course_rad);
         Self {
             leg,
             centre_m,
             turn_end_m: leg.on_arc_about(centre_m, leg.turn_rad.abs()),
-            unit,
-            // `angle::velocity` is the unit vector times the speed.
-            velocity_mps: unit * leg.speed_mps,
+            unit: angle::course_to_unit(leg.course_rad),
         }
     }
 
     /// [`Leg::pose_at`]`(elapsed_s)`, bit for bit.
     #[must_use]
     pub fn pose_at(&self, elapsed_s: f64) -> Pose {
-        let leg = self.leg;
-        if leg.speed_change.is_none() {
-            let turn_s = leg.turn_duration_s();
-            let elapsed_s = elapsed_s.clamp(0.0, leg.duration_s());
-            return if elapsed_s < turn_s {
-                let swept = elapsed_s * leg.speed_mps / leg.turn_radius_m;
-                Pose {
-                    position_m: leg.on_arc_about(self.centre_m, swept),
-                    course_rad: angle::normalize_2pi(
-                        leg.start_course_rad + leg.turn_rad.signum() * swept,
-                    ),
-                }
-            } else {
-                Pose {
-                    position_m: self.turn_end_m + self.velocity_mps * (elapsed_s - turn_s),
-                    course_rad: leg.course_rad,
-                }
-            };
-        }
-        leg.pose_along_about(
-            self.centre_m,
-            leg.distance_at(elapsed_s),
-            self.turn_end_m,
-            self.unit,
+        self.leg.pose_at_from(
+            elapsed_s,
+            || self.centre_m,
+            || self.turn_end_m,
+            || self.unit,
         )
     }
 }

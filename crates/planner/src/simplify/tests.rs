@@ -284,23 +284,6 @@ fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
     assert!(back[1].leg.end_m().distance(goal_m) < 1e-6);
 }
 
-/// Accepts every leg and counts them.
-struct Counting {
-    judged: Cell<usize>,
-}
-
-impl MotionValidator for Counting {
-    fn validate(
-        &self,
-        _leg: &Leg,
-        _start_elapsed_s: f64,
-        _state: &mut EncounterState,
-    ) -> Result<(), RejectionCause> {
-        self.judged.set(self.judged.get() + 1);
-        Ok(())
-    }
-}
-
 #[test]
 fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wanted() {
     let model = RateLimitedTurn {
@@ -328,7 +311,10 @@ fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wante
     let hold = || model.turn_onto(start, 35f64.to_radians(), 6.0, 1000.0);
     let goal_m = DVec2::new(0.0, 5000.0);
     let speeds = Speeds::constant(6.0);
-    let counting = Counting {
+    // No leg starts where this one refuses: every leg is accepted, and counted.
+    let counting = OnlyToFirst {
+        start_m: DVec2::splat(1e9),
+        first_m: DVec2::ZERO,
         judged: Cell::new(0),
     };
     // Wanted only past and clear: the hold is judged, no return searched.
