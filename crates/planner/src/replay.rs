@@ -222,6 +222,9 @@ pub(crate) struct Recording<'a, V> {
     pub(crate) refused: Cell<RejectionCounts>,
     pub(crate) deadline: Option<Instant>,
     pub(crate) expired: Cell<bool>,
+    /// The legs asked so far, and how many may be: past it every leg is
+    /// refused, not judged and not counted.
+    pub(crate) asks: Option<(&'a Cell<u64>, u64)>,
 }
 
 impl<'a, V> Recording<'a, V> {
@@ -231,6 +234,15 @@ impl<'a, V> Recording<'a, V> {
             refused: Cell::new(RejectionCounts::default()),
             deadline,
             expired: Cell::new(false),
+            asks: None,
+        }
+    }
+
+    /// Counts the legs asked in `asked`, refusing every one past `limit`.
+    pub(crate) fn with_asks(self, asked: &'a Cell<u64>, limit: u64) -> Self {
+        Self {
+            asks: Some((asked, limit)),
+            ..self
         }
     }
 }
@@ -251,6 +263,13 @@ impl<V: MotionValidator> MotionValidator for Recording<'_, V> {
             self.expired.set(true);
             return Err(RejectionCause::Clearance);
         }
+        if let Some((asked, limit)) = self.asks {
+            if asked.get() >= limit {
+                // Past the search's allowance: not a verdict of the check.
+                return Err(RejectionCause::Clearance);
+            }
+            asked.set(asked.get() + 1);
+        }
         let verdict = self.validator.validate(leg, start_elapsed_s, state);
         if let Err(cause) = verdict {
             let mut refused = self.refused.get();
@@ -265,6 +284,35 @@ impl<V: MotionValidator> MotionValidator for Recording<'_, V> {
 mod tests {
     use super::*;
     use vorrt_colregs::ManeuverViolation;
+
+    /// A validator that accepts every leg and counts the legs it judged.
+    struct Counting(Cell<u64>);
+
+    impl MotionValidator for Counting {
+        fn validate(&self, _: &Leg, _: f64, _: &mut EncounterState) -> Result<(), RejectionCause> {
+            self.0.set(self.0.get() + 1);
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn an_allowance_of_asks_refuses_past_it_without_judging_or_counting() {
+        let inner = Counting(Cell::new(0));
+        let asked = Cell::new(3);
+        let recording = Recording::new(&inner, None).with_asks(&asked, 5);
+        let leg = Leg::straight(glam::DVec2::ZERO, 0.0, 100.0, 5.0);
+        let mut state = EncounterState::default();
+        let verdicts: Vec<_> = (0..4)
+            .map(|_| recording.validate(&leg, 0.0, &mut state))
+            .collect();
+        assert_eq!(verdicts[..2], [Ok(()), Ok(())]);
+        assert_eq!(verdicts[2..], [Err(RejectionCause::Clearance); 2]);
+        // Two judged, the allowance used up, nothing counted as refused
+        // and the deadline not taken for passed.
+        assert_eq!((inner.0.get(), asked.get()), (2, 5));
+        assert_eq!(recording.refused.get(), RejectionCounts::default());
+        assert!(!recording.expired.get());
+    }
 
     #[test]
     fn only_a_weaker_or_equal_level_can_repeat_a_search() {

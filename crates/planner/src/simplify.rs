@@ -35,7 +35,8 @@
 //! held can be sailed, [`hold_then_alter`] tries the manoeuvres of two
 //! alterations: the present course kept, then one action (a stand-on
 //! vessel's, rule 17), and an alteration held, then the course held before
-//! it resumed.
+//! it resumed; [`hold_then_alter_shorter_than`] the same, shorter than a
+//! plan in hand (decision 67).
 //!
 //! Every leg starts at the speed the one before ends at (the first at
 //! ownship's present speed) and changes speed toward its settled speed at
@@ -187,7 +188,7 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
                 &from,
                 speeds,
                 points[last],
-                Alterations::Mariners,
+                (Alterations::Mariners, f64::INFINITY),
             ) {
                 legs.extend(manoeuvre);
                 break;
@@ -291,7 +292,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     from: &SimplifiedLeg,
     speeds: Speeds,
     goal_m: DVec2,
-    alterations: Alterations,
+    (alterations, shorter_than_m): (Alterations, f64),
 ) -> Option<Vec<SimplifiedLeg>> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
@@ -313,9 +314,10 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
                 .from_speed(start_mps, speeds.change_mps2);
             let shortest_m = hold.length_m() + hold.end_m().distance(goal_m);
-            if best
-                .as_ref()
-                .is_some_and(|(_, best_m, _)| shortest_m >= *best_m)
+            if shortest_m >= shorter_than_m
+                || best
+                    .as_ref()
+                    .is_some_and(|(_, best_m, _)| shortest_m >= *best_m)
             {
                 // This hold, and every longer one, sails farther than the best.
                 return HoldOutcome::Invalid;
@@ -475,102 +477,6 @@ const SHORT_OF_DEG: [f64; 2] = [15.0, 25.0];
 /// held 819 m between two port turns was seen as one of 56°).
 const SHORT_OF_HOLD_M: [f64; 3] = [2000.0, 4000.0, 6000.0];
 
-/// The manoeuvres of two alterations, tried where one alteration held
-/// cannot be sailed: from `start` with `state` in force, a first course
-/// held for one of [`HOLD_M`] (shortest first), then a second course held,
-/// then a leg to the goal. Neither hold ends past abeam of the goal: the
-/// holds of [`HOLD_M`] that would are replaced by one that ends abeam of
-/// it. Three legs, all accepted by `validator`, or `None`. In order:
-///
-/// - **Keep the course, then act**: the present course held at service
-///   speed, then any manoeuvre of the search of [`simplify`] (but holding on
-///   further, which is a longer first hold). A stand-on vessel keeps her
-///   course and speed (rule 17(a)(i)) until she may act, within the
-///   stand-on action range (17(a)(ii)), then takes such action as will best
-///   avoid collision (17(b)), to starboard first (17(c)); the shortest hold
-///   the validator accepts is the earliest action the rules allow.
-/// - **Alter, then resume**: each starboard alteration of
-///   [`ALTERATIONS_DEG`] (smallest first) held, then back onto the course
-///   held before it, held in turn: the alteration is held until the other
-///   vessel is past and clear (rule 8(d)), and the return toward the route
-///   waits until heading for the goal meets no one.
-/// - **Keep the course within the drift allowed, then act**: where both
-///   fail, the first on the present course plus [`STAND_ON_DRIFT_DEG`].
-///
-/// ```
-/// use vorrt_planner::simplify::{hold_then_alter, Speeds};
-/// use vorrt_planner::validity::EncounterState;
-/// use vorrt_planner::{safety::SafetyChecker, PlannerConfig};
-/// use vorrt_colregs::VesselState;
-/// use vorrt_jfs::{Pose, RateLimitedTurn};
-/// use glam::DVec2;
-/// let config = PlannerConfig::default();
-/// let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
-/// let goal_m = DVec2::new(3000.0, 3000.0);
-/// let checker = SafetyChecker::new(&config, &[], own, goal_m, 0.0);
-/// let legs = hold_then_alter(
-///     &RateLimitedTurn { turn_radius_m: 300.0 },
-///     &checker,
-///     Pose { position_m: DVec2::ZERO, course_rad: 0.0 },
-///     Speeds::constant(6.0),
-///     goal_m,
-///     &EncounterState::default(),
-/// )
-/// .unwrap();
-/// // Nothing in the way: the course held for the shortest hold, then the
-/// // smallest alteration.
-/// assert_eq!(legs.len(), 3);
-/// assert!((legs[0].leg.end_m().y - 250.0).abs() < 1e-6);
-/// assert!((legs[2].leg.end_m() - goal_m).length() < 1e-6);
-/// ```
-pub fn hold_then_alter<M: MotionModel, V: MotionValidator>(
-    model: &M,
-    validator: &V,
-    start: Pose,
-    speeds: Speeds,
-    goal_m: DVec2,
-    state: &EncounterState,
-) -> Option<Vec<SimplifiedLeg>> {
-    // The stand-on drifts come last: every plan found before is kept.
-    let firsts = ALTERATIONS_DEG.iter().filter(|deg| **deg >= 0.0);
-    let drifts = STAND_ON_DRIFT_DEG.map(|deg| (deg, true));
-    let firsts = firsts.map(|deg| (*deg, false)).chain(drifts);
-    for (first_deg, drift) in firsts {
-        let second = if first_deg == 0.0 || drift {
-            Alterations::MarinersAfterHolding
-        } else {
-            Alterations::Resume(first_deg)
-        };
-        let course_rad = start.course_rad + first_deg.to_radians();
-        let turn = model.turn_onto(start, course_rad, speeds.service_mps, 0.0);
-        for hold_m in holds_short_of(abeam_of(goal_m, &turn)) {
-            let hold = model
-                .turn_onto(start, course_rad, speeds.service_mps, hold_m)
-                .from_speed(speeds.start_mps, speeds.change_mps2);
-            let mut after = state.clone();
-            if validator.validate(&hold, 0.0, &mut after).is_err() {
-                // Holding this far is already invalid: longer holds are too.
-                break;
-            }
-            let first_leg = SimplifiedLeg {
-                end_elapsed_s: hold.duration_s(),
-                leg: hold,
-                state: after,
-            };
-            if let Some(rest) =
-                alter_hold_return(model, validator, &first_leg, speeds, goal_m, second)
-            {
-                return Some(std::iter::once(first_leg).chain(rest).collect());
-            }
-        }
-    }
-    None
-}
-
-/// Starboard drifts of the stand-on hold of [`hold_then_alter`], degrees:
-/// within rule 17(a)(i)'s 15° (decision 46).
-pub const STAND_ON_DRIFT_DEG: [f64; 2] = [5.0, 10.0];
-
 /// How far along the course onto which `turn` turns (with no straight run)
 /// `goal_m` comes abeam, metres from the turn's end (negative: already
 /// abaft the beam).
@@ -679,6 +585,9 @@ fn farthest_reachable<F: Fn(usize) -> Option<SimplifiedLeg>>(
     }
     Some(best)
 }
+
+mod two;
+pub use two::{STAND_ON_DRIFT_DEG, hold_then_alter, hold_then_alter_shorter_than};
 
 #[cfg(test)]
 mod tests;

@@ -5,7 +5,10 @@
 //! [`ROOT_LADDER`]: each manoeuvre shape (one alteration held, then two:
 //! decisions 14 and 27 in `docs/decisions/`), each first at the preferred
 //! clearance and then at `d_th` (decision 23); the first rung that finds a
-//! plan wins. Only when no rung does is a tree grown (decision 14), and its
+//! plan wins, but for a plan of one alteration that sails more than
+//! [`LONG_DETOUR_FACTOR`] times the straight line to the goal, which is
+//! compared with the plans of two alterations and the shorter taken
+//! (decision 67). Only when no rung finds a plan is a tree grown (decision 14), and its
 //! branch simplified by the same validity check. The compliance levels of
 //! the graded fallback (decision 17) are the ladder's outer dimension,
 //! climbed by the closed loop ([`Compliance::relaxed`](crate::Compliance::relaxed)),
@@ -27,7 +30,7 @@ use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::{Recording, Replaying};
 use crate::safety::SafetyChecker;
-use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter, simplify_after};
+use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter_shorter_than, simplify_after};
 use crate::validity::EncounterState;
 use glam::DVec2;
 use std::cell::Cell;
@@ -41,7 +44,7 @@ pub enum ManeuverShape {
     /// One alteration (of course, or of speed) held, then the goal
     /// ([`simplify`](crate::simplify::simplify)): what a mariner makes.
     OneAlteration,
-    /// Two alterations ([`hold_then_alter`]): the course kept, then one
+    /// Two alterations ([`hold_then_alter`](crate::simplify::hold_then_alter)): the course kept, then one
     /// action (a stand-on vessel's, rule 17); an alteration held, then the
     /// course before it resumed.
     TwoAlterations,
@@ -90,6 +93,21 @@ pub const ROOT_LADDER: [Rung; 4] = [
         clearance: ClearanceLevel::Floor,
     },
 ];
+
+/// A plan of one alteration from the root that sails more than this many
+/// times the straight line to the goal is compared with the plans of two
+/// alterations, and the shorter taken (decision 67).
+pub const LONG_DETOUR_FACTOR: f64 = 1.25;
+
+/// How many times the asks of the search from the root that found a long
+/// detour ([`LONG_DETOUR_FACTOR`]) the comparison with two alterations may
+/// ask the validity check about (decision 67).
+pub const COMPARISON_ASKS: u64 = 3;
+
+/// The length sailed along `legs`, metres.
+fn length_of(legs: &[SimplifiedLeg]) -> f64 {
+    legs.iter().map(|leg| leg.leg.length_m()).sum()
+}
 
 /// The search from the root for a route that crosses a traffic lane
 /// ([`Constraint::prefers_speed_changes`]): the crossing timed by speed
@@ -181,6 +199,10 @@ struct Sailing {
     deadline: Option<Instant>,
     /// Whether a search ran past `deadline`.
     expired: Cell<bool>,
+    /// The legs the manoeuvre searches asked the validity check about.
+    asked: Cell<u64>,
+    /// How many they may ask in all.
+    ask_limit: Cell<u64>,
 }
 
 impl<C: Constraint> Planner<C> {
@@ -209,6 +231,8 @@ impl<C: Constraint> Planner<C> {
             speeds,
             deadline,
             expired: Cell::new(false),
+            asked: Cell::new(0),
+            ask_limit: Cell::new(u64::MAX),
         }
     }
 
@@ -229,7 +253,7 @@ impl<C: Constraint> Planner<C> {
         sailing: &Sailing,
         model: RateLimitedTurn,
         config: &PlannerConfig,
-        shape: ManeuverShape,
+        (shape, shorter_than_m): (ManeuverShape, f64),
         points: &[DVec2],
         start_searched: bool,
         (shared, found): (&ClearanceMemo, bool),
@@ -260,7 +284,8 @@ impl<C: Constraint> Planner<C> {
             validator: &checker,
             verdicts: &self.verdicts,
         };
-        let recording = Recording::new(&checker, sailing.deadline);
+        let recording = Recording::new(&checker, sailing.deadline)
+            .with_asks(&sailing.asked, sailing.ask_limit.get());
         let start = Pose {
             position_m: sailing.own.position_m,
             course_rad: sailing.own.course_rad,
@@ -270,13 +295,14 @@ impl<C: Constraint> Planner<C> {
             alterations: self.tree.alterations_of(0).to_vec(),
         };
         let legs = match shape {
-            ManeuverShape::TwoAlterations => hold_then_alter(
+            ManeuverShape::TwoAlterations => hold_then_alter_shorter_than(
                 &model,
                 &recording,
                 start,
                 sailing.speeds,
                 problem.goal_m,
                 &root,
+                shorter_than_m,
             ),
             ManeuverShape::SpeedOnCourse => speed_on_course(
                 &model,
@@ -338,32 +364,61 @@ impl<C: Constraint> Planner<C> {
         };
         // The rungs' verdicts, shared between the two clearances.
         let shared = ClearanceMemo::default();
-        let legs = climb(
-            ladder,
-            probe,
-            self.config.preferred_clearance_factor > 1.0,
-            |rung, found| {
-                let config = match rung.clearance {
-                    ClearanceLevel::Preferred => &preferred,
-                    ClearanceLevel::Floor => &self.config,
-                };
-                if sailing.expired.get() {
-                    return None;
-                }
-                self.search_legs(
-                    problem,
-                    &sailing,
-                    model,
-                    config,
-                    rung.shape,
-                    &goal,
-                    false,
-                    (&shared, found),
-                    refused,
-                )
-                .map(|legs| (rung.shape, legs))
-            },
-        );
+        let mut search = |rung: Rung, found: bool, shorter_than_m: f64| {
+            let config = match rung.clearance {
+                ClearanceLevel::Preferred => &preferred,
+                ClearanceLevel::Floor => &self.config,
+            };
+            if sailing.expired.get() {
+                return None;
+            }
+            self.search_legs(
+                problem,
+                &sailing,
+                model,
+                config,
+                (rung.shape, shorter_than_m),
+                &goal,
+                false,
+                (&shared, found),
+                refused,
+            )
+            .map(|legs| (rung.shape, legs))
+        };
+        let widen = self.config.preferred_clearance_factor > 1.0;
+        let mut legs = climb(ladder, probe, widen, |rung, found| {
+            search(rung, found, f64::INFINITY)
+        });
+        // A one-alteration plan that sails far out of the way is compared
+        // with the shorter two-alteration plans, if any (decision 67).
+        let straight_m = sailing.own.position_m.distance(problem.goal_m);
+        let long = |legs: &[SimplifiedLeg]| {
+            let length_m = length_of(legs);
+            (length_m > LONG_DETOUR_FACTOR * straight_m).then_some(length_m)
+        };
+        if let Some((ManeuverShape::OneAlteration, found)) = &legs
+            && let Some(found_m) = long(found)
+            && !sailing.expired.get()
+        {
+            let two: Vec<Rung> = ladder
+                .iter()
+                .copied()
+                .filter(|rung| rung.shape == ManeuverShape::TwoAlterations)
+                .collect();
+            // An allowance of asks, so the comparison costs at most so many
+            // times the search it may improve on.
+            let asked = sailing.asked.get();
+            sailing
+                .ask_limit
+                .set(asked.saturating_add(asked.saturating_mul(COMPARISON_ASKS)));
+            let shorter = climb(&two, probe, widen, |rung, found| {
+                search(rung, found, found_m)
+            })
+            .filter(|(_, other)| length_of(other) < found_m);
+            if shorter.is_some() {
+                legs = shorter;
+            }
+        }
         if sailing.expired.get() {
             return Err(Expired);
         }
@@ -426,7 +481,7 @@ impl<C: Constraint> Planner<C> {
                     &sailing,
                     model,
                     &self.config,
-                    ManeuverShape::OneAlteration,
+                    (ManeuverShape::OneAlteration, f64::INFINITY),
                     &points,
                     root_searched,
                     (&ClearanceMemo::default(), false),

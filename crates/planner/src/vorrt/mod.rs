@@ -25,7 +25,10 @@ use crate::sampler::Sampler;
 use crate::tree::Tree;
 use crate::validity::{EncounterState, MotionValidator, check_legs_with};
 use extract::Expired;
-pub use extract::{ClearanceLevel, LANE_CROSSING_LADDER, ManeuverShape, Probe, ROOT_LADDER, Rung};
+pub use extract::{
+    COMPARISON_ASKS, ClearanceLevel, LANE_CROSSING_LADDER, LONG_DETOUR_FACTOR, ManeuverShape,
+    Probe, ROOT_LADDER, Rung,
+};
 use glam::DVec2;
 use std::cell::RefCell;
 use std::time::Instant;
