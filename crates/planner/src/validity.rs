@@ -30,6 +30,7 @@ use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
+use vorrt_jfs::motion::LegPoses;
 use vorrt_jfs::{Leg, LinearTrack};
 
 mod memo;
@@ -419,15 +420,20 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         // last window, from the course its steady-course search reaches
         // (`observed::observed_turn_rad`; decision 57).
         let turns_to_port = leg.turn_rad < 0.0 || turn_from_rad[1].is_some();
+        // The leg's poses, for the observer's courses over ground.
+        let poses = turns_to_port.then(|| LegPoses::new(leg));
         let check_turn = |candidate: &Move, memo: &mut LegMemo| {
             turn_from_rad.iter().flatten().try_for_each(|&from_rad| {
                 checker.check_settled_turn_reusing(from_rad, candidate, memo)
             })?;
-            if !turns_to_port {
+            let Some(poses) = &poses else {
                 return Ok(());
-            }
-            let (over_ground_rad, seen_before_rad) =
-                observed::observed_turn_rad(leg, candidate.start_elapsed_s - start_elapsed_s);
+            };
+            let (over_ground_rad, seen_before_rad) = observed::observed_turn_rad(
+                leg,
+                poses,
+                candidate.start_elapsed_s - start_elapsed_s,
+            );
             let seen = Move {
                 course_rad: over_ground_rad,
                 ..*candidate
