@@ -7,7 +7,8 @@
 //! clearance and then at `d_th` (decision 23); the first rung that finds a
 //! plan wins, but for a plan of one alteration that sails more than
 //! [`LONG_DETOUR_FACTOR`] times the straight line to the goal, which is
-//! compared with the plans of two alterations and the shorter taken
+//! compared with the plans of two alterations at its clearance and the
+//! shorter taken
 //! (decision 67). Only when no rung finds a plan is a tree grown (decision 14), and its
 //! branch simplified by the same validity check. The compliance levels of
 //! the graded fallback (decision 17) are the ladder's outer dimension,
@@ -96,13 +97,13 @@ pub const ROOT_LADDER: [Rung; 4] = [
 
 /// A plan of one alteration from the root that sails more than this many
 /// times the straight line to the goal is compared with the plans of two
-/// alterations, and the shorter taken (decision 67).
+/// alterations at the same clearance, and the shorter taken (decision 67).
 pub const LONG_DETOUR_FACTOR: f64 = 1.25;
 
 /// How many times the asks of the search from the root that found a long
 /// detour ([`LONG_DETOUR_FACTOR`]) the comparison with two alterations may
 /// ask the validity check about (decision 67).
-pub const COMPARISON_ASKS: u64 = 3;
+pub const COMPARISON_ASKS: u64 = 1;
 
 /// The length sailed along `legs`, metres.
 fn length_of(legs: &[SimplifiedLeg]) -> f64 {
@@ -383,7 +384,7 @@ impl<C: Constraint> Planner<C> {
                 (&shared, found),
                 refused,
             )
-            .map(|legs| (rung.shape, legs))
+            .map(|legs| (rung, legs))
         };
         let widen = self.config.preferred_clearance_factor > 1.0;
         let mut legs = climb(ladder, probe, widen, |rung, found| {
@@ -396,25 +397,25 @@ impl<C: Constraint> Planner<C> {
             let length_m = length_of(legs);
             (length_m > LONG_DETOUR_FACTOR * straight_m).then_some(length_m)
         };
-        if let Some((ManeuverShape::OneAlteration, found)) = &legs
+        if let Some((found_rung, found)) = &legs
+            && found_rung.shape == ManeuverShape::OneAlteration
             && let Some(found_m) = long(found)
             && !sailing.expired.get()
         {
-            let two: Vec<Rung> = ladder
-                .iter()
-                .copied()
-                .filter(|rung| rung.shape == ManeuverShape::TwoAlterations)
-                .collect();
+            // At the clearance the plan was found at: the comparison is of
+            // lengths, not of passing distances.
+            let two = Rung {
+                shape: ManeuverShape::TwoAlterations,
+                clearance: found_rung.clearance,
+            };
             // An allowance of asks, so the comparison costs at most so many
             // times the search it may improve on.
             let asked = sailing.asked.get();
             sailing
                 .ask_limit
                 .set(asked.saturating_add(asked.saturating_mul(COMPARISON_ASKS)));
-            let shorter = climb(&two, probe, widen, |rung, found| {
-                search(rung, found, found_m)
-            })
-            .filter(|(_, other)| length_of(other) < found_m);
+            let shorter =
+                search(two, false, found_m).filter(|(_, other)| length_of(other) < found_m);
             if shorter.is_some() {
                 legs = shorter;
             }
@@ -422,7 +423,7 @@ impl<C: Constraint> Planner<C> {
         if sailing.expired.get() {
             return Err(Expired);
         }
-        Ok(legs.map(|(shape, legs)| {
+        Ok(legs.map(|(Rung { shape, .. }, legs)| {
             let mut plan = self.assemble(problem, &sailing, 0, legs, statistics);
             plan.statistics.source = match shape {
                 // A change of speed held is one alteration.
