@@ -205,6 +205,18 @@ pub fn simplify_after<M: MotionModel, V: MotionValidator>(
     Some(legs)
 }
 
+/// The length sailed along `legs`, metres.
+pub(crate) fn length_of(legs: &[SimplifiedLeg]) -> f64 {
+    legs.iter().map(|leg| leg.leg.length_m()).sum()
+}
+
+/// The shortest a manoeuvre that sails `hold` can be to `goal_m`, metres:
+/// the hold, then the straight line from its end (the triangle
+/// inequality; a longer hold of the same course is no shorter).
+fn shortest_through_m(hold: &Leg, goal_m: DVec2) -> f64 {
+    hold.length_m() + hold.end_m().distance(goal_m)
+}
+
 /// Which manoeuvres [`alter_hold_return`] tries.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Alterations {
@@ -313,7 +325,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
             let hold = model
                 .turn_onto(pose, course_rad, hold_speed_mps, hold_m)
                 .from_speed(start_mps, speeds.change_mps2);
-            let shortest_m = hold.length_m() + hold.end_m().distance(goal_m);
+            let shortest_m = shortest_through_m(&hold, goal_m);
             if shortest_m >= shorter_than_m
                 || best
                     .as_ref()
@@ -360,7 +372,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                             }
                         }
                     }
-                    let length_m = legs.iter().map(|leg| leg.leg.length_m()).sum::<f64>();
+                    let length_m = length_of(&legs);
                     if best
                         .as_ref()
                         .is_none_or(|(_, best_m, _)| length_m < *best_m)

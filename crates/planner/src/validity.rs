@@ -429,11 +429,8 @@ impl<C: Constraint> SafetyChecker<'_, C> {
             let Some(poses) = &poses else {
                 return Ok(());
             };
-            let (over_ground_rad, seen_before_rad) = observed::observed_turn_rad(
-                leg,
-                poses,
-                candidate.start_elapsed_s - start_elapsed_s,
-            );
+            let (over_ground_rad, seen_before_rad) =
+                observed::observed_turn_rad(poses, candidate.start_elapsed_s - start_elapsed_s);
             let seen = Move {
                 course_rad: over_ground_rad,
                 ..*candidate

@@ -48,6 +48,19 @@ impl<'a> LegPoses<'a> {
         }
     }
 
+    /// The leg these are the poses of.
+    ///
+    /// ```
+    /// use vorrt_jfs::motion::{Leg, LegPoses};
+    /// use glam::DVec2;
+    /// let leg = Leg::straight(DVec2::ZERO, 0.0, 100.0, 5.0);
+    /// assert_eq!(LegPoses::new(&leg).leg(), &leg);
+    /// ```
+    #[must_use]
+    pub fn leg(&self) -> &'a Leg {
+        self.leg
+    }
+
     /// [`Leg::pose_at`]`(elapsed_s)`, bit for bit.
     #[must_use]
     pub fn pose_at(&self, elapsed_s: f64) -> Pose {

@@ -3,7 +3,7 @@
 
 use super::{
     ALTERATIONS_DEG, Alterations, EncounterState, SimplifiedLeg, Speeds, abeam_of,
-    alter_hold_return, holds_short_of,
+    alter_hold_return, holds_short_of, shortest_through_m,
 };
 use crate::validity::MotionValidator;
 use glam::DVec2;
@@ -130,7 +130,7 @@ pub fn hold_then_alter_shorter_than<M: MotionModel, V: MotionValidator>(
             let hold = model
                 .turn_onto(start, course_rad, speeds.service_mps, hold_m)
                 .from_speed(speeds.start_mps, speeds.change_mps2);
-            if hold.length_m() + hold.end_m().distance(goal_m) >= shorter_than_m {
+            if shortest_through_m(&hold, goal_m) >= shorter_than_m {
                 // This hold, and every longer one, sails no shorter.
                 break;
             }

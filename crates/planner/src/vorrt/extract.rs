@@ -8,9 +8,9 @@
 //! plan wins, but for a plan of one alteration that sails more than
 //! [`LONG_DETOUR_FACTOR`] times the straight line to the goal, which is
 //! compared with the plans of two alterations at its clearance and the
-//! shorter taken
-//! (decision 67). Only when no rung finds a plan is a tree grown (decision 14), and its
-//! branch simplified by the same validity check. The compliance levels of
+//! shorter taken (decision 67). Only when no rung finds a plan is a tree
+//! grown (decision 14), and its branch simplified by the same validity
+//! check. The compliance levels of
 //! the graded fallback (decision 17) are the ladder's outer dimension,
 //! climbed by the closed loop ([`Compliance::relaxed`](crate::Compliance::relaxed)),
 //! which skips a level that would only repeat a failed search
@@ -31,7 +31,9 @@ use crate::plan::{Plan, PlanSource, PlanStatistics, RejectionCounts, Waypoint};
 use crate::problem::PlanningProblem;
 use crate::replay::{Recording, Replaying};
 use crate::safety::SafetyChecker;
-use crate::simplify::{SimplifiedLeg, Speeds, hold_then_alter_shorter_than, simplify_after};
+use crate::simplify::{
+    SimplifiedLeg, Speeds, hold_then_alter_shorter_than, length_of, simplify_after,
+};
 use crate::validity::EncounterState;
 use glam::DVec2;
 use std::cell::Cell;
@@ -104,11 +106,6 @@ pub const LONG_DETOUR_FACTOR: f64 = 1.25;
 /// detour ([`LONG_DETOUR_FACTOR`]) the comparison with two alterations may
 /// ask the validity check about (decision 67).
 pub const COMPARISON_ASKS: u64 = 1;
-
-/// The length sailed along `legs`, metres.
-fn length_of(legs: &[SimplifiedLeg]) -> f64 {
-    legs.iter().map(|leg| leg.leg.length_m()).sum()
-}
 
 /// The search from the root for a route that crosses a traffic lane
 /// ([`Constraint::prefers_speed_changes`]): the crossing timed by speed
