@@ -394,7 +394,8 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 const ASTERN_DEG: [f64; 3] = [15.0, 30.0, 45.0];
 
 /// How far a course astern of a vessel ([`ASTERN_DEG`]) is held before the
-/// leg to the goal, metres, shortest first.
+/// leg to the goal, metres, shortest first; a course refused held the
+/// shortest is not asked held longer.
 const ASTERN_HOLD_M: [f64; 3] = [1000.0, 2000.0, 4000.0];
 
 /// From the end of `hold`, the return toward the goal the validator
@@ -465,7 +466,12 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
         for hold_m in holds_m {
             let part = model.turn_onto(pose, course_rad, speeds.service_mps, hold_m);
             let Ok(part) = sail(hold, part) else {
-                continue;
+                // A longer hold of this course sails the same turn and the
+                // same pieces first (`Leg::pieces`, exactly where `step_m`
+                // divides the holds, as the default 100 m does), so it is
+                // refused where this one was, as a longer hold of an
+                // alteration is (`HoldOutcome::Invalid`).
+                break;
             };
             if let Some(back) = to_goal(&part).and_then(|leg| sail(&part, leg).ok()) {
                 return Some(vec![part, back]);

@@ -328,3 +328,89 @@ fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wante
     assert!(matches!(outcome, hold::HoldOutcome::Found(ref legs) if legs.len() == 2));
     assert_eq!(counting.judged.get(), 3);
 }
+
+/// Refuses, from `hold_end_m`, the leg to the goal as a port turn onto a
+/// vessel and every other leg for clearance; records the course and
+/// straight run of every leg it judges from there.
+struct EveryReturnRefused {
+    hold_end_m: DVec2,
+    goal_m: DVec2,
+    judged: std::cell::RefCell<Vec<(f64, f64)>>,
+}
+
+impl MotionValidator for EveryReturnRefused {
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        if leg.start_m.distance(self.hold_end_m) > 1e-6 {
+            return Ok(());
+        }
+        self.judged
+            .borrow_mut()
+            .push((leg.course_rad, leg.straight_m));
+        if leg.end_m().distance(self.goal_m) < 1e-6 {
+            Err(RejectionCause::Colregs(
+                ManeuverViolation::PortTurnTowardVessel,
+            ))
+        } else {
+            Err(RejectionCause::Clearance)
+        }
+    }
+}
+
+/// A course astern of a vessel, or part of the way back, that is refused
+/// for its shortest hold is not asked again held longer: the longer leg
+/// sails the same pieces first, and is refused where the shorter one was.
+#[test]
+fn a_return_course_refused_is_not_asked_again_held_longer() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let goal_m = DVec2::new(0.0, 12_000.0);
+    let course_rad = 45f64.to_radians();
+    let hold = model.turn_onto(
+        Pose {
+            position_m: DVec2::ZERO,
+            course_rad,
+        },
+        course_rad,
+        6.0,
+        2000.0,
+    );
+    let validator = EveryReturnRefused {
+        hold_end_m: hold.end_m(),
+        goal_m,
+        judged: std::cell::RefCell::new(Vec::new()),
+    };
+    let hold = SimplifiedLeg {
+        end_elapsed_s: hold.duration_s(),
+        leg: hold,
+        state: EncounterState::default(),
+    };
+    assert!(return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m).is_none());
+    let judged = validator.judged.into_inner();
+    // The leg to the goal, then each course astern and short of the goal's
+    // bearing once, at its shortest hold.
+    assert_eq!(
+        judged.len(),
+        1 + ASTERN_DEG.len() + SHORT_OF_DEG.len(),
+        "{judged:?}"
+    );
+    for (index, (course_rad, straight_m)) in judged.iter().enumerate().skip(1) {
+        assert!(
+            judged[1..index]
+                .iter()
+                .all(|(other_rad, _)| (other_rad - course_rad).abs() > 1e-9),
+            "{judged:?}"
+        );
+        let shortest_m = if index <= ASTERN_DEG.len() {
+            ASTERN_HOLD_M[0]
+        } else {
+            SHORT_OF_HOLD_M[0]
+        };
+        assert!((straight_m - shortest_m).abs() < 1e-6, "{judged:?}");
+    }
+}
