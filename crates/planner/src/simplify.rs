@@ -280,9 +280,11 @@ impl Alterations {
 /// goal at service speed" that the validator accepts, from the first
 /// [`Grade`] of `alterations` (in order) that has one: for each alteration
 /// of the grade the shortest hold whose return is valid, and of these the
-/// manoeuvre with the least length sailed to the goal (decision 44). The
-/// hold and the return ([`return_to_goal`]: the leg to the goal, or a course
-/// astern of a vessel then that leg), or `None`.
+/// manoeuvre with the least length sailed to the goal (decision 44);
+/// alterations onto a course more than [`AWAY_FROM_GOAL_RAD`] off the
+/// goal's bearing only where no other is valid, grade by grade (decision
+/// 68). The hold and the return ([`return_to_goal`]: the leg to the goal,
+/// or a course astern of a vessel then that leg), or `None`.
 ///
 /// Taking the first alteration that works (smallest first) held 35° for up
 /// to 12 km where 45° or 55° would have cleared the same vessels held for a
@@ -308,9 +310,8 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 ) -> Option<Vec<SimplifiedLeg>> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
-    let mut best: Option<(Grade, f64, Vec<SimplifiedLeg>)> = None;
-    for (alteration_deg, factor) in alterations.order() {
-        let grade = Grade::of(alteration_deg, factor);
+    let mut best: Option<((bool, Grade), f64, Vec<SimplifiedLeg>)> = None;
+    for (alteration_deg, factor, grade) in goal_forward_first(alterations, pose, goal_m) {
         if best.as_ref().is_some_and(|(found, ..)| *found != grade) {
             // A grade that has a manoeuvre is preferred to every later one.
             break;
@@ -387,6 +388,38 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
     }
     best.map(|(_, _, legs)| legs)
 }
+
+/// The (alteration, speed factor) pairs of `alterations` from `pose`, each
+/// with its grade: first those onto a course that keeps `goal_m` forward of
+/// the beam, in order, then those onto a course more than
+/// [`AWAY_FROM_GOAL_RAD`] off its bearing, in order, each marked `true`
+/// (decision 68). Turning further away, alteration after alteration, took
+/// ownship 180° off its route among many vessels and the run ended short of
+/// the goal. Holding on such a course counts as one: exempting it let
+/// ownship hold a course away from the goal for an hour among
+/// COLREGs-obeying vessels (decision 68's measurements).
+fn goal_forward_first(
+    alterations: Alterations,
+    pose: Pose,
+    goal_m: DVec2,
+) -> Vec<(f64, f64, (bool, Grade))> {
+    let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
+    let away = |alteration_deg: f64| {
+        let course_rad = pose.course_rad + alteration_deg.to_radians();
+        angle::normalize_pi(course_rad - goal_course_rad).abs() > AWAY_FROM_GOAL_RAD
+    };
+    let (mut order, away_from): (Vec<_>, Vec<_>) = alterations
+        .order()
+        .map(|(deg, factor)| (deg, factor, (away(deg), Grade::of(deg, factor))))
+        .partition(|(.., (away, _))| !away);
+    order.extend(away_from);
+    order
+}
+
+/// An alteration onto a course more than this off the goal's bearing
+/// (the goal abaft the beam) is tried only where no other is valid,
+/// radians (90°; decision 68).
+pub const AWAY_FROM_GOAL_RAD: f64 = std::f64::consts::FRAC_PI_2;
 
 /// The courses to port of the goal's bearing that a return refused for
 /// turning to port onto a vessel tries instead, degrees: to pass astern of

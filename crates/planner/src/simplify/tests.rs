@@ -414,3 +414,106 @@ fn a_return_course_refused_is_not_asked_again_held_longer() {
         assert!((straight_m - shortest_m).abs() < 1e-6, "{judged:?}");
     }
 }
+
+/// Refuses holding on at the start (course 080°); accepts every other leg.
+struct NoHoldingOn;
+
+impl MotionValidator for NoHoldingOn {
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let holding_on = leg.start_m.length() < 1e-9
+            && angle::normalize_pi(leg.course_rad - 80f64.to_radians()).abs() < 1e-9;
+        if holding_on {
+            Err(RejectionCause::Clearance)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Refuses, from the start, every leg onto a course within 90° of north
+/// (the goal's bearing); accepts every other leg.
+struct OnlyAway;
+
+impl MotionValidator for OnlyAway {
+    fn validate(
+        &self,
+        leg: &Leg,
+        _start_elapsed_s: f64,
+        _state: &mut EncounterState,
+    ) -> Result<(), RejectionCause> {
+        let off_deg = angle::normalize_pi(leg.course_rad).to_degrees().abs();
+        if leg.start_m.length() < 1e-9 && off_deg <= 90.0 {
+            Err(RejectionCause::Clearance)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Heading 080° with the goal due north, every starboard alteration puts
+/// the goal abaft the beam: a port alteration toward it is taken first
+/// (decision 68), where before the smallest starboard one (115° off the
+/// goal) won its grade.
+#[test]
+fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let from = SimplifiedLeg {
+        leg: Leg::straight(DVec2::ZERO, 80f64.to_radians(), 0.0, 6.0),
+        end_elapsed_s: 0.0,
+        state: EncounterState::default(),
+    };
+    let goal_m = DVec2::new(0.0, 10_000.0);
+    let legs = alter_hold_return(
+        &model,
+        &NoHoldingOn,
+        &from,
+        Speeds::constant(6.0),
+        goal_m,
+        (Alterations::Mariners, f64::INFINITY),
+    )
+    .expect("a manoeuvre");
+    let altered_deg = angle::normalize_pi(legs[0].leg.course_rad - 80f64.to_radians()).to_degrees();
+    assert!(altered_deg < 0.0, "{altered_deg}");
+    let off_goal_deg = angle::normalize_pi(legs[0].leg.course_rad)
+        .to_degrees()
+        .abs();
+    assert!(off_goal_deg <= 90.0, "{off_goal_deg}");
+    // Where the only valid alterations turn away, one of them is taken.
+    let legs = alter_hold_return(
+        &model,
+        &OnlyAway,
+        &from,
+        Speeds::constant(6.0),
+        goal_m,
+        (Alterations::Mariners, f64::INFINITY),
+    )
+    .expect("a manoeuvre away");
+    let off_goal_deg = angle::normalize_pi(legs[0].leg.course_rad)
+        .to_degrees()
+        .abs();
+    assert!(off_goal_deg > 90.0, "{off_goal_deg}");
+    // Heading 120°, the goal abaft the beam, where no course toward it is
+    // valid: holding on comes first of those away from it.
+    let from = SimplifiedLeg {
+        leg: Leg::straight(DVec2::ZERO, 120f64.to_radians(), 0.0, 6.0),
+        ..from
+    };
+    let legs = alter_hold_return(
+        &model,
+        &OnlyAway,
+        &from,
+        Speeds::constant(6.0),
+        goal_m,
+        (Alterations::Mariners, f64::INFINITY),
+    )
+    .expect("holding on, away");
+    let held_deg = angle::normalize_pi(legs[0].leg.course_rad - 120f64.to_radians()).to_degrees();
+    assert!(held_deg.abs() < 1e-9, "{held_deg}");
+}
