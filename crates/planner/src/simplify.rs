@@ -282,7 +282,8 @@ impl Alterations {
 /// of the grade the shortest hold whose return is valid, and of these the
 /// manoeuvre with the least length sailed to the goal (decision 44);
 /// alterations onto a course more than [`AWAY_FROM_GOAL_RAD`] off the
-/// goal's bearing only where no other is valid, grade by grade (decision
+/// goal's bearing only where no other is valid, grade by grade, and a port
+/// alteration whose return turns to port again held at least 2 km (decision
 /// 68). The hold and the return ([`return_to_goal`]: the leg to the goal,
 /// or a course astern of a vessel then that leg), or `None`.
 ///
@@ -339,9 +340,21 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
                 model, validator, from, hold, factor, speeds, goal_m, clear_only,
             )
         };
+        // A port alteration whose return turns to port again is held long
+        // enough for an observer to see two turns, not one: held shorter,
+        // the course over ground swings on through both, and a vessel
+        // judged clear of each was seen turned toward (decision 68; as a
+        // course part of the way back is held, SHORT_OF_HOLD_M).
+        let goal_to_port =
+            angle::normalize_pi(angle::unit_to_course(goal_m - pose.position_m) - course_rad) < 0.0;
+        let shortest_m = if alteration_deg < 0.0 && goal_to_port {
+            SHORT_OF_HOLD_M[0]
+        } else {
+            0.0
+        };
         // The longest hold known to be valid whose return was refused.
         let mut refused_m: Option<f64> = None;
-        for hold_m in holds {
+        for hold_m in holds.filter(|hold_m| *hold_m >= shortest_m) {
             match sail(hold_m, best.is_some()) {
                 // Holding on is already invalid this far: longer holds are too.
                 HoldOutcome::Invalid => break,
@@ -390,10 +403,9 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 }
 
 /// The (alteration, speed factor) pairs of `alterations` from `pose`, each
-/// with its grade: first those onto a course that keeps `goal_m` forward of
-/// the beam, in order, then those onto a course more than
-/// [`AWAY_FROM_GOAL_RAD`] off its bearing, in order, each marked `true`
-/// (decision 68). Turning further away, alteration after alteration, took
+/// with its grade: first those onto a course no more than
+/// [`AWAY_FROM_GOAL_RAD`] off the bearing of `goal_m`, in order, then the
+/// others, in order, each marked `true` (decision 68). Turning further away, alteration after alteration, took
 /// ownship 180° off its route among many vessels and the run ended short of
 /// the goal. Holding on such a course counts as one: exempting it let
 /// ownship hold a course away from the goal for an hour among
@@ -416,10 +428,11 @@ fn goal_forward_first(
     order
 }
 
-/// An alteration onto a course more than this off the goal's bearing
-/// (the goal abaft the beam) is tried only where no other is valid,
-/// radians (90°; decision 68).
-pub const AWAY_FROM_GOAL_RAD: f64 = std::f64::consts::FRAC_PI_2;
+/// An alteration onto a course more than this off the goal's bearing is
+/// tried only where no other is valid, radians (112.5°: the goal more than
+/// 22.5° abaft the beam, in the sector of the sternlight, rule 21(c), the
+/// bearing at which the project reads a vessel as past; decision 68).
+pub const AWAY_FROM_GOAL_RAD: f64 = 5.0 * std::f64::consts::FRAC_PI_8;
 
 /// The courses to port of the goal's bearing that a return refused for
 /// turning to port onto a vessel tries instead, degrees: to pass astern of

@@ -456,7 +456,8 @@ impl MotionValidator for OnlyAway {
 }
 
 /// Heading 080° with the goal due north, every starboard alteration puts
-/// the goal abaft the beam: a port alteration toward it is taken first
+/// the goal more than 22.5° abaft the beam: a port alteration toward it is
+/// taken first
 /// (decision 68), where before the smallest starboard one (115° off the
 /// goal) won its grade.
 #[test]
@@ -499,8 +500,8 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
         .to_degrees()
         .abs();
     assert!(off_goal_deg > 90.0, "{off_goal_deg}");
-    // Heading 120°, the goal abaft the beam, where no course toward it is
-    // valid: holding on comes first of those away from it.
+    // Heading 120°, the goal more than 22.5° abaft the beam, where no
+    // course toward it is valid: holding on comes first of those away.
     let from = SimplifiedLeg {
         leg: Leg::straight(DVec2::ZERO, 120f64.to_radians(), 0.0, 6.0),
         ..from
@@ -516,4 +517,37 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
     .expect("holding on, away");
     let held_deg = angle::normalize_pi(legs[0].leg.course_rad - 120f64.to_radians()).to_degrees();
     assert!(held_deg.abs() < 1e-9, "{held_deg}");
+}
+
+/// Heading 130° with the goal due north, every course toward the goal is a
+/// port alteration whose return turns to port again: it is held at least
+/// [`SHORT_OF_HOLD_M`]'s first, so that an observer sees two port turns and
+/// not one (decision 68), where the shortest hold (250 m) won before.
+#[test]
+fn a_port_alteration_whose_return_turns_to_port_is_held_to_be_seen_as_two_turns() {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let from = SimplifiedLeg {
+        leg: Leg::straight(DVec2::ZERO, 130f64.to_radians(), 0.0, 6.0),
+        end_elapsed_s: 0.0,
+        state: EncounterState::default(),
+    };
+    let legs = alter_hold_return(
+        &model,
+        &NoHoldingOn,
+        &from,
+        Speeds::constant(6.0),
+        DVec2::new(0.0, 10_000.0),
+        (Alterations::Mariners, f64::INFINITY),
+    )
+    .expect("a manoeuvre");
+    let altered_deg =
+        angle::normalize_pi(legs[0].leg.course_rad - 130f64.to_radians()).to_degrees();
+    assert!(altered_deg < 0.0, "{altered_deg}");
+    assert!(
+        legs[0].leg.straight_m >= SHORT_OF_HOLD_M[0] - 1e-6,
+        "{}",
+        legs[0].leg.straight_m
+    );
 }
