@@ -311,8 +311,9 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 ) -> Option<Vec<SimplifiedLeg>> {
     let pose = from.leg.end_pose();
     let start_mps = from.leg.end_speed_mps();
+    let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
     let mut best: Option<((bool, Grade), f64, Vec<SimplifiedLeg>)> = None;
-    for (alteration_deg, factor, grade) in goal_forward_first(alterations, pose, goal_m) {
+    for (alteration_deg, factor, grade) in goal_forward_first(alterations, pose, goal_course_rad) {
         if best.as_ref().is_some_and(|(found, ..)| *found != grade) {
             // A grade that has a manoeuvre is preferred to every later one.
             break;
@@ -345,8 +346,7 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
         // the course over ground swings on through both, and a vessel
         // judged clear of each was seen turned toward (decision 68; as a
         // course part of the way back is held, SHORT_OF_HOLD_M).
-        let goal_to_port =
-            angle::normalize_pi(angle::unit_to_course(goal_m - pose.position_m) - course_rad) < 0.0;
+        let goal_to_port = angle::normalize_pi(goal_course_rad - course_rad) < 0.0;
         let shortest_m = if alteration_deg < 0.0 && goal_to_port {
             SHORT_OF_HOLD_M[0]
         } else {
@@ -404,18 +404,18 @@ fn alter_hold_return<M: MotionModel, V: MotionValidator>(
 
 /// The (alteration, speed factor) pairs of `alterations` from `pose`, each
 /// with its grade: first those onto a course no more than
-/// [`AWAY_FROM_GOAL_RAD`] off the bearing of `goal_m`, in order, then the
-/// others, in order, each marked `true` (decision 68). Turning further away, alteration after alteration, took
-/// ownship 180° off its route among many vessels and the run ended short of
-/// the goal. Holding on such a course counts as one: exempting it let
-/// ownship hold a course away from the goal for an hour among
-/// COLREGs-obeying vessels (decision 68's measurements).
+/// [`AWAY_FROM_GOAL_RAD`] off the goal's bearing `goal_course_rad`, in
+/// order, then the others, in order, each marked `true` (decision 68).
+/// Turning further away, alteration after alteration, took ownship 180° off
+/// its route among many vessels and the run ended short of the goal.
+/// Holding on such a course counts as one: exempting it let ownship hold a
+/// course away from the goal for an hour among COLREGs-obeying vessels
+/// (decision 68's measurements).
 fn goal_forward_first(
     alterations: Alterations,
     pose: Pose,
-    goal_m: DVec2,
+    goal_course_rad: f64,
 ) -> Vec<(f64, f64, (bool, Grade))> {
-    let goal_course_rad = angle::unit_to_course(goal_m - pose.position_m);
     let away = |alteration_deg: f64| {
         let course_rad = pose.course_rad + alteration_deg.to_radians();
         angle::normalize_pi(course_rad - goal_course_rad).abs() > AWAY_FROM_GOAL_RAD
