@@ -415,19 +415,18 @@ fn a_return_course_refused_is_not_asked_again_held_longer() {
     }
 }
 
-/// Refuses holding on at the start (course 080°); accepts every other leg.
-struct NoHoldingOn;
+/// A validator of the legs' shape alone: `refuses` says which legs it
+/// refuses (for clearance); it accepts every other.
+struct RefusingWhere<F>(F);
 
-impl MotionValidator for NoHoldingOn {
+impl<F: Fn(&Leg) -> bool> MotionValidator for RefusingWhere<F> {
     fn validate(
         &self,
         leg: &Leg,
         _start_elapsed_s: f64,
         _state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
-        let holding_on = leg.start_m.length() < 1e-9
-            && angle::normalize_pi(leg.course_rad - 80f64.to_radians()).abs() < 1e-9;
-        if holding_on {
+        if (self.0)(leg) {
             Err(RejectionCause::Clearance)
         } else {
             Ok(())
@@ -435,31 +434,27 @@ impl MotionValidator for NoHoldingOn {
     }
 }
 
-/// Refuses, from the start, every leg onto a course within 90° of north
-/// (the goal's bearing); accepts every other leg.
-struct OnlyAway;
+/// Refuses holding on at the start (course 080°).
+fn no_holding_on() -> RefusingWhere<impl Fn(&Leg) -> bool> {
+    RefusingWhere(|leg: &Leg| {
+        leg.start_m.length() < 1e-9
+            && angle::normalize_pi(leg.course_rad - 80f64.to_radians()).abs() < 1e-9
+    })
+}
 
-impl MotionValidator for OnlyAway {
-    fn validate(
-        &self,
-        leg: &Leg,
-        _start_elapsed_s: f64,
-        _state: &mut EncounterState,
-    ) -> Result<(), RejectionCause> {
-        let off_deg = angle::normalize_pi(leg.course_rad).to_degrees().abs();
-        if leg.start_m.length() < 1e-9 && off_deg <= 90.0 {
-            Err(RejectionCause::Clearance)
-        } else {
-            Ok(())
-        }
-    }
+/// Refuses, from the start, every leg onto a course within 90° of north
+/// (the goal's bearing).
+fn only_away() -> RefusingWhere<impl Fn(&Leg) -> bool> {
+    RefusingWhere(|leg: &Leg| {
+        leg.start_m.length() < 1e-9
+            && angle::normalize_pi(leg.course_rad).to_degrees().abs() <= 90.0
+    })
 }
 
 /// Heading 080° with the goal due north, every starboard alteration puts
 /// the goal more than 22.5° abaft the beam: a port alteration toward it is
-/// taken first
-/// (decision 68), where before the smallest starboard one (115° off the
-/// goal) won its grade.
+/// taken first (decision 68), where before the smallest starboard one (115°
+/// off the goal) won its grade.
 #[test]
 fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
     let model = RateLimitedTurn {
@@ -473,7 +468,7 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
     let goal_m = DVec2::new(0.0, 10_000.0);
     let legs = alter_hold_return(
         &model,
-        &NoHoldingOn,
+        &no_holding_on(),
         &from,
         Speeds::constant(6.0),
         goal_m,
@@ -489,7 +484,7 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
     // Where the only valid alterations turn away, one of them is taken.
     let legs = alter_hold_return(
         &model,
-        &OnlyAway,
+        &only_away(),
         &from,
         Speeds::constant(6.0),
         goal_m,
@@ -508,7 +503,7 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
     };
     let legs = alter_hold_return(
         &model,
-        &OnlyAway,
+        &only_away(),
         &from,
         Speeds::constant(6.0),
         goal_m,
@@ -535,7 +530,7 @@ fn a_port_alteration_whose_return_turns_to_port_is_held_to_be_seen_as_two_turns(
     };
     let legs = alter_hold_return(
         &model,
-        &NoHoldingOn,
+        &no_holding_on(),
         &from,
         Speeds::constant(6.0),
         DVec2::new(0.0, 10_000.0),
