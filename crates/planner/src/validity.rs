@@ -30,12 +30,14 @@ use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
-use vorrt_jfs::motion::LegPoses;
 use vorrt_jfs::{Leg, LinearTrack};
 
 mod memo;
 mod observed;
+mod port_turns;
 pub(crate) use memo::{Along, LegMemo};
+use port_turns::PortTurns;
+pub use port_turns::TurnSeen;
 
 /// The encounters in force at one point of a branch: per target, the latch
 /// (rules 13-17) and what ownship carries for it ([`alteration_made`]: for a
@@ -48,11 +50,28 @@ pub struct EncounterState {
     pub latches: Vec<Option<EncounterLatch>>,
     /// Each target's alteration made, radians (0 without an encounter).
     pub alterations: Vec<f64>,
+    /// A turn of an earlier leg that an observer still sees when this
+    /// point is reached (decision 69), if any: the legs that follow are
+    /// judged from the course held before it, as the turn's own leg is.
+    pub turn_seen: Option<TurnSeen>,
 }
 
 impl EncounterState {
-    /// Copies `latches` and `alterations` in, reusing the buffers.
+    /// A state with `latches` and `alterations` in force and no turn seen.
+    #[must_use]
+    pub fn new(latches: Vec<Option<EncounterLatch>>, alterations: Vec<f64>) -> Self {
+        Self {
+            latches,
+            alterations,
+            turn_seen: None,
+        }
+    }
+
+    /// Copies `latches` and `alterations` in, reusing the buffers, with no
+    /// turn seen (a tree's node keeps none: its legs are judged on their
+    /// own, and the path extracted from it leg after leg).
     pub fn set(&mut self, latches: &[Option<EncounterLatch>], alterations: &[f64]) {
+        self.turn_seen = None;
         self.latches.clear();
         self.latches.extend_from_slice(latches);
         self.alterations.clear();
@@ -328,11 +347,11 @@ fn worth_pruning<C: Constraint>(checker: &SafetyChecker<'_, C>, leg: &Leg) -> bo
 /// let tracks = [TargetState::constant_velocity(
 ///     VesselState::new(DVec2::new(150.0, 1000.0), 0.0, 0.0, 50.0)).track()];
 /// let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 5000.0), 0.0);
-/// let mut state = EncounterState { latches: vec![None], alterations: vec![0.0] };
+/// let mut state = EncounterState::new(vec![None], vec![0.0]);
 /// let north = Leg::straight(DVec2::ZERO, 0.0, 2000.0, 6.0);
 /// assert!(checker.validate(&north, 0.0, &mut state).is_err()); // within d_th
 /// let west = Leg::straight(DVec2::ZERO, 270f64.to_radians(), 2000.0, 6.0);
-/// let mut state = EncounterState { latches: vec![None], alterations: vec![0.0] };
+/// let mut state = EncounterState::new(vec![None], vec![0.0]);
 /// assert!(checker.validate(&west, 0.0, &mut state).is_ok());
 /// ```
 pub trait MotionValidator {
@@ -398,55 +417,14 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         } else {
             leg.start_course_rad
         };
-        // The courses a port turn of this leg is judged from (decision 57).
-        // On a plan's first leg the observer's steady course still lags a
-        // turn ended within the window before the plan (it is the course
-        // before that turn); an encounter arising later in the leg's turn
-        // is judged by the evaluation from the course held at the leg's
-        // start (looking back a window into the turn, then to its start).
-        // Both are asked, where ownship holds its course at the start (a
-        // plan made part way round a turn is judged from the course before
-        // it alone): a return to the old course soon after an alteration
-        // is a port turn from the course then held.
-        let turn_from_rad = [
-            Some(before_course_rad),
-            (start_elapsed_s <= 0.0
-                && !self.turning_at_start
-                && before_course_rad.to_bits() != leg.start_course_rad.to_bits())
-            .then_some(leg.start_course_rad),
-        ];
-        // A port turn in this leg is also judged as an observer of course
-        // over ground judges it at the piece's start: the course over the
-        // last window, from the course its steady-course search reaches
-        // (`observed::observed_turn_rad`; decision 57).
-        let turns_to_port = leg.turn_rad < 0.0 || turn_from_rad[1].is_some();
-        // The leg's poses, for the observer's courses over ground.
-        let poses = turns_to_port.then(|| LegPoses::new(leg));
-        let check_turn = |candidate: &Move, memo: &mut LegMemo| {
-            turn_from_rad.iter().flatten().try_for_each(|&from_rad| {
-                checker.check_settled_turn_reusing(from_rad, candidate, memo)
-            })?;
-            let Some(poses) = &poses else {
-                return Ok(());
-            };
-            let (over_ground_rad, seen_before_rad) =
-                observed::observed_turn_rad(poses, candidate.start_elapsed_s - start_elapsed_s);
-            let seen = Move {
-                course_rad: over_ground_rad,
-                ..*candidate
-            };
-            turn_from_rad
-                .iter()
-                .flatten()
-                .chain(&seen_before_rad)
-                .try_for_each(|&from_rad| checker.check_settled_turn_reusing(from_rad, &seen, memo))
-        };
-        // An observer judging course over ground over a window sees the
-        // turn for a window after it ends, and a new encounter is judged
-        // against the course a window before it arose: two windows.
-        let settled_until_s =
-            start_elapsed_s + leg.turn_duration_s() + 2.0 * STEADY_COURSE_WINDOW_S;
-        let in_window = |c: &Move| c.start_elapsed_s - c.duration_s <= settled_until_s;
+        // The courses a port turn of this leg is judged from, and on which
+        // pieces (decisions 28, 57, 69).
+        let port_turns = PortTurns::new(
+            leg,
+            (start_elapsed_s, before_course_rad),
+            self.turning_at_start,
+            state.turn_seen,
+        );
         // Each target's velocity, reused along the leg while its course and
         // speed stay the same, and the targets no risk can reach while the
         // velocities hold (decision 54).
@@ -490,11 +468,11 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 // course over ground part way round), and a vessel that
                 // acts answers it (decision 51); so is gathering way after it,
                 // short of the speed settled on (decision 62).
-                if piece.turning || in_window(&candidate) {
-                    check_turn(&candidate, &mut memo)?;
+                if let Some(own) = port_turns.wanted(&candidate, piece.turning) {
+                    port_turns.check(&checker, &candidate, &mut memo, own)?;
                 }
             } else {
-                if in_window(&candidate) {
+                if let Some(own) = port_turns.wanted(&candidate, false) {
                     // The course the leg's turn settles on, judged against
                     // every vessel while an observer still sees the turn
                     // (decision 28), on every piece that starts within the
@@ -502,7 +480,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                     // within MTD part way through the window's last piece
                     // is latched there by the evaluation, and is seen at the
                     // next piece's start (decision 51).
-                    check_turn(&candidate, &mut memo)?;
+                    port_turns.check(&checker, &candidate, &mut memo, own)?;
                 }
                 checker.check(&candidate, &state.latches, &state.alterations)?;
             }
@@ -532,6 +510,8 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 &mut memo,
             );
         }
+        // What the next leg inherits (decision 69).
+        state.turn_seen = port_turns.seen_after(leg, start_elapsed_s + leg.duration_s());
         Ok(())
     }
 }
@@ -581,14 +561,14 @@ pub fn check_legs_with<C: Constraint>(
     .with_state_velocities(&velocities)
     .with_constraint(constraint);
     let targets = tracks.len();
-    let mut state = EncounterState {
-        latches: (0..targets)
+    let mut state = EncounterState::new(
+        (0..targets)
             .map(|index| problem.encounters.get(index).copied().flatten())
             .collect(),
-        alterations: (0..targets)
+        (0..targets)
             .map(|index| problem.alterations.get(index).copied().unwrap_or(0.0))
             .collect(),
-    };
+    );
     let mut elapsed_s = 0.0;
     for leg in legs {
         checker.validate(leg, elapsed_s, &mut state)?;
@@ -670,10 +650,7 @@ mod tests {
         ))
         .track()];
         let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
-        let mut state = EncounterState {
-            latches: vec![None],
-            alterations: vec![0.0],
-        };
+        let mut state = EncounterState::new(vec![None], vec![0.0]);
         let mut memo = LegMemo::default();
         let north = DVec2::new(0.0, 6.0);
         for (elapsed_s, sailed_mps) in [(10.0, Some(north)), (20.0, Some(north))] {

@@ -63,10 +63,7 @@ fn verdict(
             hold_m,
         )
         .from_speed(6.0, 0.02);
-    let mut state = EncounterState {
-        latches: latches.to_vec(),
-        alterations: vec![0.0; tracks.len()],
-    };
+    let mut state = EncounterState::new(latches.to_vec(), vec![0.0; tracks.len()]);
     checker.validate(&leg, 0.0, &mut state)
 }
 

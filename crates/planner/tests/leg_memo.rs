@@ -117,10 +117,7 @@ proptest! {
         prop_assert!(!without.leg_memo());
         prop_assert!(without.state_velocities().is_empty());
         let count = tracks.len();
-        let fresh = || EncounterState {
-            latches: vec![None; count],
-            alterations: vec![0.0; count],
-        };
+        let fresh = || EncounterState::new(vec![None; count], vec![0.0; count]);
         let (mut remembered, mut afresh) = (fresh(), fresh());
         let mut elapsed_s = start_elapsed_s;
         for leg in &legs {

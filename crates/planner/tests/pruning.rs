@@ -186,10 +186,7 @@ proptest! {
             .filter_map(|(track, kept)| kept.then_some(*track))
             .collect();
         let alone = SafetyChecker::new(&config, &kept, own(), goal, 0.0);
-        let fresh = |count: usize| EncounterState {
-            latches: vec![None; count],
-            alterations: vec![0.0; count],
-        };
+        let fresh = |count: usize| EncounterState::new(vec![None; count], vec![0.0; count]);
         let (mut all_state, mut kept_state) = (fresh(count), fresh(kept.len()));
         let verdict = checker.validate(&leg, start_elapsed_s, &mut all_state);
         prop_assert_eq!(verdict, alone.validate(&leg, start_elapsed_s, &mut kept_state));

@@ -151,10 +151,7 @@ fn the_return_in_a_crossing_begins_once_the_vessel_is_past_and_clear() {
         latch.map(|latch| latch.encounter),
         Some(Encounter::CrossingGiveWay)
     );
-    let state = EncounterState {
-        latches: vec![latch],
-        alterations: vec![0.0],
-    };
+    let state = EncounterState::new(vec![latch], vec![0.0]);
     let legs = simplify(
         &model,
         &checker,
@@ -291,14 +288,14 @@ fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wante
     };
     let own = vorrt_colregs::VesselState::new(DVec2::ZERO, 0.0, 6.0, 50.0);
     // A head-on encounter in force: ownship gives way, not yet past.
-    let giving_way = EncounterState {
-        latches: vec![Some(vorrt_colregs::EncounterLatch::new(
+    let giving_way = EncounterState::new(
+        vec![Some(vorrt_colregs::EncounterLatch::new(
             vorrt_colregs::Encounter::HeadOn,
             &own,
             0.0,
         ))],
-        alterations: vec![0.0],
-    };
+        vec![0.0],
+    );
     let from = SimplifiedLeg {
         leg: Leg::straight(DVec2::ZERO, 0.0, 0.0, 6.0),
         end_elapsed_s: 0.0,

@@ -141,7 +141,7 @@ fn turn_key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Optio
 /// The bits of everything a verdict depends on in one search: the leg, its
 /// start time and the encounters in force (exact: `-0.0` is not `0.0`).
 fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
-    let mut key = Vec::with_capacity(12 + 7 * state.latches.len() + state.alterations.len());
+    let mut key = Vec::with_capacity(15 + 7 * state.latches.len() + state.alterations.len());
     key.extend(
         [
             leg.start_m.x,
@@ -178,6 +178,14 @@ fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
         }
     }
     key.extend(state.alterations.iter().map(|altered| altered.to_bits()));
+    match state.turn_seen {
+        Some(seen) => key.extend([
+            1,
+            seen.course_before_rad.to_bits(),
+            seen.until_elapsed_s.to_bits(),
+        ]),
+        None => key.push(0),
+    }
     key
 }
 
@@ -286,10 +294,7 @@ mod tests {
     }
 
     fn no_encounter() -> EncounterState {
-        EncounterState {
-            latches: vec![None],
-            alterations: vec![0.0],
-        }
+        EncounterState::new(vec![None], vec![0.0])
     }
 
     /// The checkers at `d_th` and at the preferred clearance.

@@ -288,10 +288,10 @@ impl<C: Constraint> Planner<C> {
             position_m: sailing.own.position_m,
             course_rad: sailing.own.course_rad,
         };
-        let root = EncounterState {
-            latches: self.tree.latches_of(0).to_vec(),
-            alterations: self.tree.alterations_of(0).to_vec(),
-        };
+        let root = EncounterState::new(
+            self.tree.latches_of(0).to_vec(),
+            self.tree.alterations_of(0).to_vec(),
+        );
         let legs = match shape {
             ManeuverShape::TwoAlterations => hold_then_alter_shorter_than(
                 &model,
@@ -522,10 +522,10 @@ impl<C: Constraint> Planner<C> {
                 SimplifiedLeg {
                     leg,
                     end_elapsed_s: self.tree.times[to] - problem.start_time_s,
-                    state: EncounterState {
-                        latches: self.tree.latches_of(pair[1]).to_vec(),
-                        alterations: self.tree.alterations_of(pair[1]).to_vec(),
-                    },
+                    state: EncounterState::new(
+                        self.tree.latches_of(pair[1]).to_vec(),
+                        self.tree.alterations_of(pair[1]).to_vec(),
+                    ),
                 }
             })
             .collect()

@@ -351,10 +351,7 @@ impl<C: Constraint + Clone> ClosedLoop<C> {
             time_s: 0.0,
             own,
             target_states: motions.iter().map(|motion| motion.vessel()).collect(),
-            encounters: EncounterState {
-                latches: vec![None; motions.len()],
-                alterations: vec![0.0; motions.len()],
-            },
+            encounters: EncounterState::new(vec![None; motions.len()], vec![0.0; motions.len()]),
             targets: motions,
             steady_course_rad: own.course_rad,
             own_courses_rad: Vec::new(),
