@@ -129,3 +129,34 @@ fn runs_216_716_gather_way_after_a_return_with_no_port_turn_onto_a_vessel() {
         ],
     );
 }
+
+/// Decision 69: open-sea run 8200 of 10 000 (8 COLREGs-obeying targets,
+/// seed 11). Replanning at 590 s on 035, ownship came back to 350 and, at
+/// 712 s, onto 351 for the goal; TS7, crossing from port, came within MTD
+/// at 765 s, on the second leg, 53 s after the return. The evaluation
+/// judged a 44° port turn toward TS7 from the course held before it; the
+/// validity check had judged the second leg from its own start course, a
+/// turn of 1° to starboard. Now every leg within two windows of a port
+/// turn is judged from the course before it.
+#[test]
+fn run_8200_makes_no_port_return_after_its_correction_leg() {
+    const RUN_8200_SEED: u64 = 9_837_149_573_923_060_621;
+    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
+    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 8200).expect("generated");
+    let record = simulate(&scenario, RUN_8200_SEED).expect("valid settings");
+    let evaluation = evaluate(&scenario, &record);
+    assert!(!evaluation.collision);
+    assert!(evaluation.clearance_kept);
+    assert!(evaluation.reached_goal);
+    for target in &evaluation.targets {
+        assert!(
+            !target
+                .findings
+                .iter()
+                .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
+            "{}: {:?}",
+            target.name,
+            target.findings
+        );
+    }
+}
