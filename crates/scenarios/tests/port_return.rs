@@ -140,23 +140,9 @@ fn runs_216_716_gather_way_after_a_return_with_no_port_turn_onto_a_vessel() {
 /// turn is judged from the course before it.
 #[test]
 fn run_8200_makes_no_port_return_after_its_correction_leg() {
-    const RUN_8200_SEED: u64 = 9_837_149_573_923_060_621;
-    let spec = OpenSeaSpec::with_targets(8).with_behaviour(TargetBehaviour::Colregs);
-    let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, 8200).expect("generated");
-    let record = simulate(&scenario, RUN_8200_SEED).expect("valid settings");
-    let evaluation = evaluate(&scenario, &record);
-    assert!(!evaluation.collision);
-    assert!(evaluation.clearance_kept);
-    assert!(evaluation.reached_goal);
-    for target in &evaluation.targets {
-        assert!(
-            !target
-                .findings
-                .iter()
-                .any(|f| matches!(f, ComplianceViolation::PortTurnTowardVessel { .. })),
-            "{}: {:?}",
-            target.name,
-            target.findings
-        );
-    }
+    safe_at_the_goal_with_no_port_return(
+        8,
+        TargetBehaviour::Colregs,
+        &[(8200, 9_837_149_573_923_060_621)],
+    );
 }

@@ -238,17 +238,12 @@ impl MotionValidator for PortVesselOnTheReturn {
     }
 }
 
-/// Where the leg to the goal is refused for turning to port onto a vessel
-/// and no course astern of it is valid, the return comes back part of the
-/// way: a course short of the goal's bearing, held 2 km, then the goal
-/// (without it, no return: a longer hold of the alteration was the only
-/// way, decision 61).
-#[test]
-fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
+/// The fixture of the returns' tests: a 300 m turning radius, the goal
+/// 12 km north, and 2 km held on 045 at 6 m/s from the origin.
+fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, Leg) {
     let model = RateLimitedTurn {
         turn_radius_m: 300.0,
     };
-    let goal_m = DVec2::new(0.0, 12_000.0);
     let course_rad = 45f64.to_radians();
     let hold = model.turn_onto(
         Pose {
@@ -259,6 +254,17 @@ fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
         6.0,
         2000.0,
     );
+    (model, DVec2::new(0.0, 12_000.0), hold)
+}
+
+/// Where the leg to the goal is refused for turning to port onto a vessel
+/// and no course astern of it is valid, the return comes back part of the
+/// way: a course short of the goal's bearing, held 2 km, then the goal
+/// (without it, no return: a longer hold of the alteration was the only
+/// way, decision 61).
+#[test]
+fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
+    let (model, goal_m, hold) = held_2_km_on_045();
     let validator = PortVesselOnTheReturn {
         hold_end_m: hold.end_m(),
         goal_m,
@@ -363,20 +369,7 @@ impl MotionValidator for EveryReturnRefused {
 /// sails the same pieces first, and is refused where the shorter one was.
 #[test]
 fn a_return_course_refused_is_not_asked_again_held_longer() {
-    let model = RateLimitedTurn {
-        turn_radius_m: 300.0,
-    };
-    let goal_m = DVec2::new(0.0, 12_000.0);
-    let course_rad = 45f64.to_radians();
-    let hold = model.turn_onto(
-        Pose {
-            position_m: DVec2::ZERO,
-            course_rad,
-        },
-        course_rad,
-        6.0,
-        2000.0,
-    );
+    let (model, goal_m, hold) = held_2_km_on_045();
     let validator = EveryReturnRefused {
         hold_end_m: hold.end_m(),
         goal_m,
