@@ -162,3 +162,112 @@ impl<'l> PortTurns<'l> {
 fn starts_by(candidate: &Move, until_s: f64) -> bool {
     candidate.start_elapsed_s - candidate.duration_s <= until_s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+    use vorrt_jfs::Pose;
+
+    const SPEED_MPS: f64 = 6.0;
+
+    /// From 035 at once onto `course_deg`, then `straight_m` on.
+    fn return_onto(course_deg: f64, straight_m: f64) -> Leg {
+        let from = Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 35f64.to_radians(),
+        };
+        Leg::turning_onto(from, course_deg.to_radians(), 0.0, SPEED_MPS, straight_m)
+    }
+
+    /// A piece of 10 s starting `start_elapsed_s` after the plan's start.
+    fn piece_at(start_elapsed_s: f64) -> Move {
+        Move {
+            start_m: DVec2::ZERO,
+            start_elapsed_s,
+            course_rad: 0.0,
+            velocity_mps: DVec2::new(0.0, SPEED_MPS),
+            duration_s: 10.0,
+        }
+    }
+
+    #[test]
+    fn a_leg_ending_within_two_windows_of_its_turn_leaves_the_course_before() {
+        let before_rad = 35f64.to_radians();
+        // 60 m at 6 m/s: the leg ends 10 s after its turn (made at once).
+        let short = return_onto(350.0, 60.0);
+        let turns = PortTurns::new(&short, (0.0, before_rad), false, None);
+        let seen = turns.seen_after(&short, short.duration_s());
+        assert_eq!(
+            seen,
+            Some(TurnSeen {
+                course_before_rad: before_rad,
+                until_elapsed_s: 2.0 * STEADY_COURSE_WINDOW_S,
+            })
+        );
+        // 1 km: the leg outlasts the two windows; nothing is left.
+        let long = return_onto(350.0, 1000.0);
+        let turns = PortTurns::new(&long, (0.0, before_rad), false, None);
+        assert_eq!(turns.seen_after(&long, long.duration_s()), None);
+        // No change of course: nothing to see.
+        let on = return_onto(35.0, 60.0);
+        let turns = PortTurns::new(&on, (0.0, before_rad), false, None);
+        assert_eq!(turns.seen_after(&on, on.duration_s()), None);
+    }
+
+    #[test]
+    fn a_turn_carried_in_is_kept_before_the_legs_own_and_asked_while_seen() {
+        let carried = TurnSeen {
+            course_before_rad: 35f64.to_radians(),
+            until_elapsed_s: 120.0,
+        };
+        // A correction leg from 350 to 351 starting 10 s into the plan.
+        let from = Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 350f64.to_radians(),
+        };
+        let correction = Leg::turning_onto(from, 351f64.to_radians(), 0.0, SPEED_MPS, 60.0);
+        let start_s = 10.0;
+        let turns = PortTurns::new(
+            &correction,
+            (start_s, 350f64.to_radians()),
+            false,
+            Some(carried),
+        );
+        // The earlier turn first: it is still seen when this leg ends.
+        assert_eq!(
+            turns.seen_after(&correction, start_s + correction.duration_s()),
+            Some(carried)
+        );
+        // Its own window (a turn at once, then two windows) reaches 130 s,
+        // the carried one 120 s: pieces starting at 125 s and at 139 s
+        // (129 s less their 10 s) are judged for the leg's own turn, one
+        // at 200 s not at all unless it is on the turn.
+        assert_eq!(turns.wanted(&piece_at(125.0), false), Some(true));
+        assert_eq!(turns.wanted(&piece_at(139.0), false), Some(true));
+        assert_eq!(turns.wanted(&piece_at(200.0), false), None);
+        assert_eq!(turns.wanted(&piece_at(200.0), true), Some(true));
+        // A carried turn seen no longer when the leg starts is dropped.
+        let late = PortTurns::new(
+            &correction,
+            (130.0, 350f64.to_radians()),
+            false,
+            Some(carried),
+        );
+        assert!(late.carried.is_none());
+    }
+
+    #[test]
+    fn a_piece_after_the_legs_own_window_is_asked_only_for_the_turn_carried_in() {
+        let carried = TurnSeen {
+            course_before_rad: 35f64.to_radians(),
+            until_elapsed_s: 400.0,
+        };
+        let leg = Leg::straight(DVec2::ZERO, 351f64.to_radians(), 3000.0, SPEED_MPS);
+        let turns = PortTurns::new(&leg, (100.0, 351f64.to_radians()), false, Some(carried));
+        // The leg's own window: 100 s + 0 (no turn) + 120 s.
+        assert_eq!(turns.wanted(&piece_at(200.0), false), Some(true));
+        assert_eq!(turns.wanted(&piece_at(300.0), false), Some(false));
+        assert_eq!(turns.wanted(&piece_at(420.0), false), None);
+    }
+}
