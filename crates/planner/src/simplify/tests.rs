@@ -207,14 +207,28 @@ fn the_return_in_a_crossing_begins_once_the_vessel_is_past_and_clear() {
 }
 
 /// Refuses, from `hold_end_m`, the leg to the goal as a port turn onto a
-/// vessel and every course to port of the goal's bearing; accepts every
-/// other leg (decision 61).
-struct PortVesselOnTheReturn {
+/// vessel, and every other leg from there for clearance: those to port of
+/// the goal's bearing only, or (`every`) all of them (decision 61); records
+/// the course and straight run of every leg it judges from there.
+struct ReturnRefused {
     hold_end_m: DVec2,
     goal_m: DVec2,
+    every: bool,
+    judged: std::cell::RefCell<Vec<(f64, f64)>>,
 }
 
-impl MotionValidator for PortVesselOnTheReturn {
+impl ReturnRefused {
+    fn new(hold_end_m: DVec2, goal_m: DVec2, every: bool) -> Self {
+        Self {
+            hold_end_m,
+            goal_m,
+            every,
+            judged: std::cell::RefCell::new(Vec::new()),
+        }
+    }
+}
+
+impl MotionValidator for ReturnRefused {
     fn validate(
         &self,
         leg: &Leg,
@@ -224,13 +238,16 @@ impl MotionValidator for PortVesselOnTheReturn {
         if leg.start_m.distance(self.hold_end_m) > 1e-6 {
             return Ok(());
         }
+        self.judged
+            .borrow_mut()
+            .push((leg.course_rad, leg.straight_m));
         let goal_course_rad = angle::unit_to_course(self.goal_m - self.hold_end_m);
         let off_rad = angle::normalize_pi(leg.course_rad - goal_course_rad);
         if leg.end_m().distance(self.goal_m) < 1e-6 {
             Err(RejectionCause::Colregs(
                 ManeuverViolation::PortTurnTowardVessel,
             ))
-        } else if off_rad < 0.0 {
+        } else if self.every || off_rad < 0.0 {
             Err(RejectionCause::Clearance)
         } else {
             Ok(())
@@ -239,8 +256,9 @@ impl MotionValidator for PortVesselOnTheReturn {
 }
 
 /// The fixture of the returns' tests: a 300 m turning radius, the goal
-/// 12 km north, and 2 km held on 045 at 6 m/s from the origin.
-fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, Leg) {
+/// 12 km north, and 2 km held on 045 at 6 m/s from the origin with no
+/// encounter in force.
+fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, SimplifiedLeg) {
     let model = RateLimitedTurn {
         turn_radius_m: 300.0,
     };
@@ -254,6 +272,11 @@ fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, Leg) {
         6.0,
         2000.0,
     );
+    let hold = SimplifiedLeg {
+        end_elapsed_s: hold.duration_s(),
+        leg: hold,
+        state: EncounterState::default(),
+    };
     (model, DVec2::new(0.0, 12_000.0), hold)
 }
 
@@ -265,15 +288,7 @@ fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, Leg) {
 #[test]
 fn a_return_refused_for_a_port_vessel_comes_back_part_of_the_way() {
     let (model, goal_m, hold) = held_2_km_on_045();
-    let validator = PortVesselOnTheReturn {
-        hold_end_m: hold.end_m(),
-        goal_m,
-    };
-    let hold = SimplifiedLeg {
-        end_elapsed_s: hold.duration_s(),
-        leg: hold,
-        state: EncounterState::default(),
-    };
+    let validator = ReturnRefused::new(hold.leg.end_m(), goal_m, false);
     let back = return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m)
         .expect("a return part of the way");
     assert_eq!(back.len(), 2);
@@ -332,54 +347,13 @@ fn a_hold_that_ends_before_past_and_clear_searches_no_return_where_none_is_wante
     assert_eq!(counting.judged.get(), 3);
 }
 
-/// Refuses, from `hold_end_m`, the leg to the goal as a port turn onto a
-/// vessel and every other leg for clearance; records the course and
-/// straight run of every leg it judges from there.
-struct EveryReturnRefused {
-    hold_end_m: DVec2,
-    goal_m: DVec2,
-    judged: std::cell::RefCell<Vec<(f64, f64)>>,
-}
-
-impl MotionValidator for EveryReturnRefused {
-    fn validate(
-        &self,
-        leg: &Leg,
-        _start_elapsed_s: f64,
-        _state: &mut EncounterState,
-    ) -> Result<(), RejectionCause> {
-        if leg.start_m.distance(self.hold_end_m) > 1e-6 {
-            return Ok(());
-        }
-        self.judged
-            .borrow_mut()
-            .push((leg.course_rad, leg.straight_m));
-        if leg.end_m().distance(self.goal_m) < 1e-6 {
-            Err(RejectionCause::Colregs(
-                ManeuverViolation::PortTurnTowardVessel,
-            ))
-        } else {
-            Err(RejectionCause::Clearance)
-        }
-    }
-}
-
 /// A course astern of a vessel, or part of the way back, that is refused
 /// for its shortest hold is not asked again held longer: the longer leg
 /// sails the same pieces first, and is refused where the shorter one was.
 #[test]
 fn a_return_course_refused_is_not_asked_again_held_longer() {
     let (model, goal_m, hold) = held_2_km_on_045();
-    let validator = EveryReturnRefused {
-        hold_end_m: hold.end_m(),
-        goal_m,
-        judged: std::cell::RefCell::new(Vec::new()),
-    };
-    let hold = SimplifiedLeg {
-        end_elapsed_s: hold.duration_s(),
-        leg: hold,
-        state: EncounterState::default(),
-    };
+    let validator = ReturnRefused::new(hold.leg.end_m(), goal_m, true);
     assert!(return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m).is_none());
     let judged = validator.judged.into_inner();
     // The leg to the goal, then each course astern and short of the goal's
@@ -441,30 +415,38 @@ fn only_away() -> RefusingWhere<impl Fn(&Leg) -> bool> {
     })
 }
 
+/// The manoeuvre search of the mariners' alterations (300 m turning radius,
+/// 6 m/s) from the origin heading `course_deg`, toward a goal 10 km north,
+/// with `validator`.
+fn mariners_heading<V: MotionValidator>(
+    validator: &V,
+    course_deg: f64,
+) -> Option<Vec<SimplifiedLeg>> {
+    let model = RateLimitedTurn {
+        turn_radius_m: 300.0,
+    };
+    let from = SimplifiedLeg {
+        leg: Leg::straight(DVec2::ZERO, course_deg.to_radians(), 0.0, 6.0),
+        end_elapsed_s: 0.0,
+        state: EncounterState::default(),
+    };
+    alter_hold_return(
+        &model,
+        validator,
+        &from,
+        Speeds::constant(6.0),
+        DVec2::new(0.0, 10_000.0),
+        (Alterations::Mariners, f64::INFINITY),
+    )
+}
+
 /// Heading 080° with the goal due north, every starboard alteration puts
 /// the goal more than 22.5° abaft the beam: a port alteration toward it is
 /// taken first (decision 68), where before the smallest starboard one (115°
 /// off the goal) won its grade.
 #[test]
 fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
-    let model = RateLimitedTurn {
-        turn_radius_m: 300.0,
-    };
-    let from = SimplifiedLeg {
-        leg: Leg::straight(DVec2::ZERO, 80f64.to_radians(), 0.0, 6.0),
-        end_elapsed_s: 0.0,
-        state: EncounterState::default(),
-    };
-    let goal_m = DVec2::new(0.0, 10_000.0);
-    let legs = alter_hold_return(
-        &model,
-        &no_holding_on(),
-        &from,
-        Speeds::constant(6.0),
-        goal_m,
-        (Alterations::Mariners, f64::INFINITY),
-    )
-    .expect("a manoeuvre");
+    let legs = mariners_heading(&no_holding_on(), 80.0).expect("a manoeuvre");
     let altered_deg = angle::normalize_pi(legs[0].leg.course_rad - 80f64.to_radians()).to_degrees();
     assert!(altered_deg < 0.0, "{altered_deg}");
     let off_goal_deg = angle::normalize_pi(legs[0].leg.course_rad)
@@ -472,34 +454,14 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
         .abs();
     assert!(off_goal_deg <= 90.0, "{off_goal_deg}");
     // Where the only valid alterations turn away, one of them is taken.
-    let legs = alter_hold_return(
-        &model,
-        &only_away(),
-        &from,
-        Speeds::constant(6.0),
-        goal_m,
-        (Alterations::Mariners, f64::INFINITY),
-    )
-    .expect("a manoeuvre away");
+    let legs = mariners_heading(&only_away(), 80.0).expect("a manoeuvre away");
     let off_goal_deg = angle::normalize_pi(legs[0].leg.course_rad)
         .to_degrees()
         .abs();
     assert!(off_goal_deg > 90.0, "{off_goal_deg}");
     // Heading 120°, the goal more than 22.5° abaft the beam, where no
     // course toward it is valid: holding on comes first of those away.
-    let from = SimplifiedLeg {
-        leg: Leg::straight(DVec2::ZERO, 120f64.to_radians(), 0.0, 6.0),
-        ..from
-    };
-    let legs = alter_hold_return(
-        &model,
-        &only_away(),
-        &from,
-        Speeds::constant(6.0),
-        goal_m,
-        (Alterations::Mariners, f64::INFINITY),
-    )
-    .expect("holding on, away");
+    let legs = mariners_heading(&only_away(), 120.0).expect("holding on, away");
     let held_deg = angle::normalize_pi(legs[0].leg.course_rad - 120f64.to_radians()).to_degrees();
     assert!(held_deg.abs() < 1e-9, "{held_deg}");
 }
@@ -510,23 +472,7 @@ fn a_course_that_puts_the_goal_abaft_the_beam_is_tried_last() {
 /// not one (decision 68), where the shortest hold (250 m) won before.
 #[test]
 fn a_port_alteration_whose_return_turns_to_port_is_held_to_be_seen_as_two_turns() {
-    let model = RateLimitedTurn {
-        turn_radius_m: 300.0,
-    };
-    let from = SimplifiedLeg {
-        leg: Leg::straight(DVec2::ZERO, 130f64.to_radians(), 0.0, 6.0),
-        end_elapsed_s: 0.0,
-        state: EncounterState::default(),
-    };
-    let legs = alter_hold_return(
-        &model,
-        &no_holding_on(),
-        &from,
-        Speeds::constant(6.0),
-        DVec2::new(0.0, 10_000.0),
-        (Alterations::Mariners, f64::INFINITY),
-    )
-    .expect("a manoeuvre");
+    let legs = mariners_heading(&no_holding_on(), 130.0).expect("a manoeuvre");
     let altered_deg =
         angle::normalize_pi(legs[0].leg.course_rad - 130f64.to_radians()).to_degrees();
     assert!(altered_deg < 0.0, "{altered_deg}");
