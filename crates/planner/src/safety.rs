@@ -256,6 +256,11 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         self.config
     }
 
+    /// The goal, metres.
+    pub(crate) fn goal_m(&self) -> DVec2 {
+        self.goal_m
+    }
+
     /// Each target's predicted motion from the plan's start.
     #[must_use]
     pub fn tracks(&self) -> &'a [LinearTrack] {

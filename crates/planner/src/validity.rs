@@ -32,12 +32,16 @@ use vorrt_colregs::rules::{
 use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
 use vorrt_jfs::{Leg, LinearTrack};
 
+pub(crate) mod key;
 mod memo;
 mod observed;
 mod port_turns;
+mod prefixes;
 pub(crate) use memo::{Along, LegMemo};
 use port_turns::PortTurns;
 pub use port_turns::TurnSeen;
+pub(crate) use prefixes::LegPrefixes;
+use prefixes::{Carried, Keeping};
 
 /// The encounters in force at one point of a branch: per target, the latch
 /// (rules 13-17) and what ownship carries for it ([`alteration_made`]: for a
@@ -301,6 +305,11 @@ impl EncounterState {
 /// [`SafetyChecker::within_reach`] to be worked out for it.
 const PRUNE_PIECES: f64 = 4.0;
 
+/// How near the goal, metres, a leg must end to be taken for one to the
+/// goal: nothing is sailed on from its end, so it is not kept for longer
+/// legs ([`LegPrefixes`]).
+const GOAL_REACHED_M: f64 = 1.0;
+
 /// The fewest targets for which [`SafetyChecker::within_reach`] is worked
 /// out: with fewer, the few it could skip spared less than it cost
 /// (callgrind, `profile_tss 20 1`, 16 targets).
@@ -377,7 +386,7 @@ impl<C: Constraint> MotionValidator for SafetyChecker<'_, C> {
         start_elapsed_s: f64,
         state: &mut EncounterState,
     ) -> Result<(), RejectionCause> {
-        self.validate_pieces(leg, start_elapsed_s, state, &mut false)
+        self.validate_pieces(leg, start_elapsed_s, state, &mut false, None)
     }
 }
 
@@ -395,12 +404,16 @@ impl<C: Constraint> SafetyChecker<'_, C> {
     /// turn: the chords, and everything judged on them, depend on the
     /// leg's start, turn, speeds and start time, and not on its straight
     /// run (where [`turn_verdicts_shared`](Self::turn_verdicts_shared)).
+    /// With `prefixes` (and the clearance judged at), a leg resumes where a
+    /// shorter one with the same start ended, and is kept for longer ones
+    /// (decision 70): the same verdict and encounters.
     pub(crate) fn validate_pieces(
         &self,
         leg: &Leg,
         start_elapsed_s: f64,
         state: &mut EncounterState,
         on_turn: &mut bool,
+        prefixes: Option<(&LegPrefixes, f64)>,
     ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
         // once: the others can change no verdict (decision 33).
@@ -431,7 +444,24 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         let mut memo = LegMemo::default();
         // The heading at the last piece's end (on a turn, part way round).
         let mut heading_rad = leg.start_course_rad;
-        for piece in leg.pieces(self.config().step_m) {
+        let step_m = self.config().step_m;
+        // Only a long leg judged against every target is kept (a leg's
+        // targets within reach depend on its length; a leg to the goal is
+        // not sailed on).
+        let prefixes = prefixes.filter(|_| {
+            in_reach.is_none()
+                && leg.straight_m > PRUNE_PIECES * step_m
+                && leg.end_m().distance(self.goal_m()) > GOAL_REACHED_M
+        });
+        let carried = Carried {
+            state,
+            memo: &mut memo,
+            heading_rad: &mut heading_rad,
+            on_turn,
+        };
+        let (pieces, mut kept) = Keeping::start(prefixes, (leg, start_elapsed_s), step_m, carried);
+        for piece in pieces {
+            kept.sailed(piece);
             *on_turn = piece.turning;
             let candidate = Move {
                 start_m: piece.start_m,
@@ -510,6 +540,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 &mut memo,
             );
         }
+        kept.keep(leg, (state, &memo, heading_rad));
         // What the next leg inherits (decision 69).
         state.turn_seen = port_turns.seen_after(leg, start_elapsed_s + leg.duration_s());
         Ok(())
@@ -578,97 +609,4 @@ pub fn check_legs_with<C: Constraint>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::PlannerConfig;
-    use vorrt_jfs::TargetState;
-
-    /// The settled-turn predicate's velocities kept in a leg's memo are
-    /// those worked out afresh, bit for bit, whichever of the course turned
-    /// to, the course before and the speed changes between two asks.
-    #[test]
-    fn turn_velocities_are_reused_only_for_the_same_bits() {
-        let mut memo = LegMemo::default();
-        let own = VesselState::new(DVec2::ZERO, 0.3, 6.0, 100.0);
-        let fresh = |before_rad: f64, own: &VesselState| {
-            let before = VesselState {
-                course_rad: before_rad,
-                ..*own
-            };
-            (own.velocity_mps(), before.velocity_mps())
-        };
-        let asks = [
-            (1.2, own),
-            (1.2, own),
-            (1.3, own),
-            (
-                1.3,
-                VesselState {
-                    course_rad: 0.4,
-                    ..own
-                },
-            ),
-            (
-                1.3,
-                VesselState {
-                    speed_mps: 5.0,
-                    ..own
-                },
-            ),
-            (1.2, own),
-        ];
-        for (before_rad, own) in asks {
-            let (own_mps, before_mps) = memo.turn_velocities(before_rad, &own);
-            let (want_own, want_before) = fresh(before_rad, &own);
-            assert_eq!(
-                own_mps.to_array().map(f64::to_bits),
-                want_own.to_array().map(f64::to_bits)
-            );
-            assert_eq!(
-                before_mps.to_array().map(f64::to_bits),
-                want_before.to_array().map(f64::to_bits)
-            );
-        }
-        // A target's velocity asked before the latch step sized the memo.
-        let target = VesselState::new(DVec2::new(100.0, 0.0), 2.0, 4.0, 50.0);
-        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
-        assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
-    }
-
-    /// A vessel 5 km to starboard on the reciprocal course passes clear: on
-    /// the straight run it is remembered as one no risk can reach, and the
-    /// memo is dropped on a piece not sailed at the velocity seen.
-    #[test]
-    fn a_target_passing_clear_is_remembered_on_the_straight_run() {
-        let config = PlannerConfig::default();
-        let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
-        let tracks = [TargetState::constant_velocity(VesselState::new(
-            DVec2::new(5_000.0, 6_000.0),
-            std::f64::consts::PI,
-            6.0,
-            100.0,
-        ))
-        .track()];
-        let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
-        let mut state = EncounterState::new(vec![None], vec![0.0]);
-        let mut memo = LegMemo::default();
-        let north = DVec2::new(0.0, 6.0);
-        for (elapsed_s, sailed_mps) in [(10.0, Some(north)), (20.0, Some(north))] {
-            let own_then = VesselState {
-                position_m: north * elapsed_s,
-                ..own
-            };
-            state.advance_reusing(&own_then, 0.0, &checker, (elapsed_s, sailed_mps), &mut memo);
-        }
-        assert_eq!(memo.clear, [Some(0)]);
-        assert_eq!(memo.seen_mps, Some(north));
-        // A transient piece (a turn's chord): nothing is kept.
-        let own_then = VesselState {
-            position_m: north * 30.0,
-            ..own
-        };
-        state.advance_reusing(&own_then, 0.0, &checker, (30.0, None), &mut memo);
-        assert_eq!(memo.clear, [None]);
-        assert_eq!(state.latches, [None]);
-    }
-}
+mod tests;

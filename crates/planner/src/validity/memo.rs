@@ -33,7 +33,7 @@ impl<C: Constraint> SafetyChecker<'_, C> {
 
 /// What a leg's check carries from one piece to the next, per target
 /// ([`EncounterState::advance_reusing`]).
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub(crate) struct LegMemo {
     /// Each target's velocity, reused while its course and speed stay the
     /// same ([`velocity_of`]).

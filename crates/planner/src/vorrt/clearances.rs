@@ -38,10 +38,9 @@
 use crate::constraint::Constraint;
 use crate::plan::RejectionCause;
 use crate::safety::SafetyChecker;
-use crate::validity::{EncounterState, MotionValidator};
+use crate::validity::key::{WordMap, key_of};
+use crate::validity::{EncounterState, LegPrefixes, MotionValidator};
 use std::cell::{Cell, RefCell};
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
 use vorrt_colregs::ManeuverViolation;
 use vorrt_jfs::Leg;
 
@@ -55,49 +54,6 @@ struct Known {
     refused: Option<(f64, RejectionCause)>,
 }
 
-/// A hasher for keys of 64-bit words (the memo's): one multiply and rotate
-/// a word (the Firefox hasher's mix), where the standard `SipHash` took about
-/// 400 instructions a key, 2 % of a campaign's (decision 66). The memo is
-/// only looked up, never iterated, so the hasher changes no verdict.
-#[derive(Debug, Default, Clone, Copy)]
-pub(crate) struct WordHasher {
-    hash: u64,
-}
-
-impl WordHasher {
-    /// The Firefox hasher's multiplier (a fixed odd constant).
-    const SEED: u64 = 0x51_7c_c1_b7_27_22_0a_95;
-
-    fn add(&mut self, word: u64) {
-        self.hash = (self.hash.rotate_left(5) ^ word).wrapping_mul(Self::SEED);
-    }
-}
-
-impl Hasher for WordHasher {
-    fn finish(&self) -> u64 {
-        self.hash
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for chunk in bytes.chunks(8) {
-            let mut word = [0u8; 8];
-            word[..chunk.len()].copy_from_slice(chunk);
-            self.add(u64::from_le_bytes(word));
-        }
-    }
-
-    fn write_u64(&mut self, word: u64) {
-        self.add(word);
-    }
-
-    fn write_usize(&mut self, word: usize) {
-        self.add(word as u64);
-    }
-}
-
-/// A map keyed by words, hashed by [`WordHasher`].
-type WordMap<V> = HashMap<Vec<u64>, V, BuildHasherDefault<WordHasher>>;
-
 /// The verdicts of one search from the root, by leg, start time and
 /// encounters in force, and the refusals on a turn's chords by the same
 /// less the straight run (module documentation).
@@ -109,6 +65,8 @@ pub(crate) struct ClearanceMemo {
     turns: RefCell<WordMap<(f64, RejectionCause)>>,
     /// How many legs were passed on to be judged.
     judged: Cell<u64>,
+    /// The legs accepted, for longer legs with the same start (decision 70).
+    prefixes: LegPrefixes,
 }
 
 impl ClearanceMemo {
@@ -136,57 +94,6 @@ fn turn_key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Optio
         };
         key_of(&turn, start_elapsed_s, state)
     })
-}
-
-/// The bits of everything a verdict depends on in one search: the leg, its
-/// start time and the encounters in force (exact: `-0.0` is not `0.0`).
-fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
-    let mut key = Vec::with_capacity(15 + 7 * state.latches.len() + state.alterations.len());
-    key.extend(
-        [
-            leg.start_m.x,
-            leg.start_m.y,
-            leg.start_course_rad,
-            leg.course_rad,
-            leg.turn_rad,
-            leg.turn_radius_m,
-            leg.straight_m,
-            leg.speed_mps,
-            start_elapsed_s,
-        ]
-        .map(f64::to_bits),
-    );
-    match leg.speed_change {
-        Some(change) => key.extend([
-            1,
-            change.start_speed_mps.to_bits(),
-            change.rate_mps2.to_bits(),
-        ]),
-        None => key.push(0),
-    }
-    for latch in &state.latches {
-        match latch {
-            Some(latch) => key.extend([
-                1 + latch.encounter as u64,
-                latch.reference_course_rad.to_bits(),
-                latch.reference_speed_mps.to_bits(),
-                latch.latched_at_s.to_bits(),
-                latch.risk_distance_m.map_or(u64::MAX, f64::to_bits),
-                u64::from(latch.risk_distance_m.is_some()),
-            ]),
-            None => key.push(0),
-        }
-    }
-    key.extend(state.alterations.iter().map(|altered| altered.to_bits()));
-    match state.turn_seen {
-        Some(seen) => key.extend([
-            1,
-            seen.course_before_rad.to_bits(),
-            seen.until_elapsed_s.to_bits(),
-        ]),
-        None => key.push(0),
-    }
-    key
 }
 
 /// The validator of one rung of the search from the root at `clearance_m`,
@@ -245,9 +152,13 @@ impl<C: Constraint> MotionValidator for AcrossClearances<'_, '_, C> {
         }
         let mut on_turn = false;
         self.memo.judged.set(self.memo.judged.get() + 1);
-        let verdict = self
-            .validator
-            .validate_pieces(leg, start_elapsed_s, state, &mut on_turn);
+        let verdict = self.validator.validate_pieces(
+            leg,
+            start_elapsed_s,
+            state,
+            &mut on_turn,
+            Some((&self.memo.prefixes, self.clearance_m)),
+        );
         if let (Err(cause), true, Some(turn_key)) = (verdict, on_turn, turn_key) {
             let mut turns = self.memo.turns.borrow_mut();
             let entry = turns.entry(turn_key).or_insert((self.clearance_m, cause));
@@ -411,7 +322,7 @@ mod tests {
             model.turn_onto(start, east, 6.0, 2000.0),
         );
         let mut on_turn = false;
-        let refused = checker.validate_pieces(&short, 0.0, &mut no_encounter(), &mut on_turn);
+        let refused = checker.validate_pieces(&short, 0.0, &mut no_encounter(), &mut on_turn, None);
         assert_eq!(refused, Err(RejectionCause::Clearance));
         assert!(on_turn);
         let memo = ClearanceMemo::default();

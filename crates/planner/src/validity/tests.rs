@@ -1,0 +1,94 @@
+//! Unit tests of the leg memo carried from piece to piece (decision 54).
+
+use super::*;
+use crate::PlannerConfig;
+use vorrt_jfs::TargetState;
+
+/// The settled-turn predicate's velocities kept in a leg's memo are
+/// those worked out afresh, bit for bit, whichever of the course turned
+/// to, the course before and the speed changes between two asks.
+#[test]
+fn turn_velocities_are_reused_only_for_the_same_bits() {
+    let mut memo = LegMemo::default();
+    let own = VesselState::new(DVec2::ZERO, 0.3, 6.0, 100.0);
+    let fresh = |before_rad: f64, own: &VesselState| {
+        let before = VesselState {
+            course_rad: before_rad,
+            ..*own
+        };
+        (own.velocity_mps(), before.velocity_mps())
+    };
+    let asks = [
+        (1.2, own),
+        (1.2, own),
+        (1.3, own),
+        (
+            1.3,
+            VesselState {
+                course_rad: 0.4,
+                ..own
+            },
+        ),
+        (
+            1.3,
+            VesselState {
+                speed_mps: 5.0,
+                ..own
+            },
+        ),
+        (1.2, own),
+    ];
+    for (before_rad, own) in asks {
+        let (own_mps, before_mps) = memo.turn_velocities(before_rad, &own);
+        let (want_own, want_before) = fresh(before_rad, &own);
+        assert_eq!(
+            own_mps.to_array().map(f64::to_bits),
+            want_own.to_array().map(f64::to_bits)
+        );
+        assert_eq!(
+            before_mps.to_array().map(f64::to_bits),
+            want_before.to_array().map(f64::to_bits)
+        );
+    }
+    // A target's velocity asked before the latch step sized the memo.
+    let target = VesselState::new(DVec2::new(100.0, 0.0), 2.0, 4.0, 50.0);
+    assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+    assert_eq!(memo.target_velocity(3, &target), target.velocity_mps());
+}
+
+/// A vessel 5 km to starboard on the reciprocal course passes clear: on
+/// the straight run it is remembered as one no risk can reach, and the
+/// memo is dropped on a piece not sailed at the velocity seen.
+#[test]
+fn a_target_passing_clear_is_remembered_on_the_straight_run() {
+    let config = PlannerConfig::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+    let tracks = [TargetState::constant_velocity(VesselState::new(
+        DVec2::new(5_000.0, 6_000.0),
+        std::f64::consts::PI,
+        6.0,
+        100.0,
+    ))
+    .track()];
+    let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
+    let mut state = EncounterState::new(vec![None], vec![0.0]);
+    let mut memo = LegMemo::default();
+    let north = DVec2::new(0.0, 6.0);
+    for (elapsed_s, sailed_mps) in [(10.0, Some(north)), (20.0, Some(north))] {
+        let own_then = VesselState {
+            position_m: north * elapsed_s,
+            ..own
+        };
+        state.advance_reusing(&own_then, 0.0, &checker, (elapsed_s, sailed_mps), &mut memo);
+    }
+    assert_eq!(memo.clear, [Some(0)]);
+    assert_eq!(memo.seen_mps, Some(north));
+    // A transient piece (a turn's chord): nothing is kept.
+    let own_then = VesselState {
+        position_m: north * 30.0,
+        ..own
+    };
+    state.advance_reusing(&own_then, 0.0, &checker, (30.0, None), &mut memo);
+    assert_eq!(memo.clear, [None]);
+    assert_eq!(state.latches, [None]);
+}
