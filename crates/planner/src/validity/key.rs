@@ -101,3 +101,14 @@ pub(crate) fn key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) ->
     }
     key
 }
+
+/// The key of `leg` less its straight run ([`key_of`] of the leg with none)
+/// from `start_elapsed_s` with `state`: the same for every leg that makes
+/// the same turn from the same start, whatever its straight run.
+pub(crate) fn start_key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Vec<u64> {
+    let turn = Leg {
+        straight_m: 0.0,
+        ..*leg
+    };
+    key_of(&turn, start_elapsed_s, state)
+}

@@ -15,7 +15,7 @@
 //! are compared, bit for bit, with the shorter leg's, and a leg whose
 //! pieces differ is judged from its start.
 
-use super::key::{WordMap, key_of};
+use super::key::{WordMap, start_key_of};
 use super::{EncounterState, LegMemo};
 use std::cell::RefCell;
 use vorrt_jfs::{Leg, Piece};
@@ -110,16 +110,15 @@ impl LegPrefixes {
         carried: &mut Carried<'_>,
     ) -> (I, Vec<Piece>) {
         let judged = self.judged.borrow();
-        let mut shorter: Vec<&Judged> = judged
+        // Longest first (kept in order of straight run): a hold halfway
+        // between two of `HOLD_M` is cut into other pieces than the holds
+        // of `HOLD_M` (its pieces differ from the first straight piece on,
+        // found at once).
+        let shorter = judged
             .get(key)
             .into_iter()
-            .flatten()
-            .filter(|judged| judged.straight_m <= leg.straight_m)
-            .collect();
-        shorter.sort_by(|a, b| b.straight_m.total_cmp(&a.straight_m));
-        // Longest first: a hold halfway between two of `HOLD_M` is cut
-        // into other pieces than the holds of `HOLD_M` (its pieces differ
-        // from the first straight piece on, found at once).
+            .flat_map(|legs| legs.iter().rev())
+            .filter(|judged| judged.straight_m <= leg.straight_m);
         for shorter in shorter {
             let mut rest = pieces();
             if shorter
@@ -147,11 +146,7 @@ impl LegPrefixes {
         state: &EncounterState,
         clearance_m: f64,
     ) -> Vec<u64> {
-        let turn = Leg {
-            straight_m: 0.0,
-            ..*leg
-        };
-        let mut key = key_of(&turn, start_elapsed_s, state);
+        let mut key = start_key_of(leg, start_elapsed_s, state);
         key.push(clearance_m.to_bits());
         key
     }

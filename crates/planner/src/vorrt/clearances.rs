@@ -38,7 +38,7 @@
 use crate::constraint::Constraint;
 use crate::plan::RejectionCause;
 use crate::safety::SafetyChecker;
-use crate::validity::key::{WordMap, key_of};
+use crate::validity::key::{WordMap, key_of, start_key_of};
 use crate::validity::{EncounterState, LegPrefixes, MotionValidator};
 use std::cell::{Cell, RefCell};
 use vorrt_colregs::ManeuverViolation;
@@ -87,13 +87,8 @@ const SHARED_TURN_MIN_STRAIGHT_M: f64 = 1.0;
 /// The key of `leg`'s turn (the leg less its straight run) from
 /// `start_elapsed_s` with `state`, where its chords' verdicts are shared.
 fn turn_key_of(leg: &Leg, start_elapsed_s: f64, state: &EncounterState) -> Option<Vec<u64>> {
-    (leg.turn_rad != 0.0 && leg.straight_m >= SHARED_TURN_MIN_STRAIGHT_M).then(|| {
-        let turn = Leg {
-            straight_m: 0.0,
-            ..*leg
-        };
-        key_of(&turn, start_elapsed_s, state)
-    })
+    (leg.turn_rad != 0.0 && leg.straight_m >= SHARED_TURN_MIN_STRAIGHT_M)
+        .then(|| start_key_of(leg, start_elapsed_s, state))
 }
 
 /// The validator of one rung of the search from the root at `clearance_m`,
