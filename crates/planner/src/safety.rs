@@ -26,11 +26,10 @@
 use crate::config::{Compliance, PlannerConfig};
 use crate::constraint::{Constraint, NoConstraint};
 use crate::plan::RejectionCause;
-use crate::validity::LegMemo;
+use crate::validity::{LegMemo, TurnGeometry};
 use glam::DVec2;
 use vorrt_colregs::rules::{
-    PortTurnGate, acting_for_any, course_change_rad, is_port_turn,
-    is_port_turn_toward_vessel_moving, may_act,
+    acting_for_any, course_change_rad, is_port_turn, is_port_turn_toward_vessel_moving, may_act,
 };
 use vorrt_colregs::{
     CandidateMotion, EncounterLatch, ManeuverViolation, Role, VesselState, check_action,
@@ -446,10 +445,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             speed_mps: candidate.velocity_mps.length(),
             ..self.ownship
         };
-        // Ownship's velocities on the course turned to and the course before,
-        // worked out once for every target (decision 54).
-        let mut own_mps = None;
-        let gate = PortTurnGate::new(course_before_rad, candidate.course_rad);
+        // Ownship's velocities on the course turned to and the course
+        // before, and the gate's unit vectors, worked out once a vessel is
+        // within MTD, and kept for the same turn (decisions 46, 54).
+        let mut turn = None;
         for (index, track) in self.tracks.iter().enumerate() {
             if !self.may_reach(index) {
                 continue;
@@ -460,14 +459,18 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             // gate's dot products: decision 46); for those its full state,
             // dearer than its position, is not needed.
             let position_m = track.position_at(candidate.start_elapsed_s);
-            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules)
-                || !gate.may_turn_toward(position_m - candidate.start_m)
-            {
+            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules) {
+                continue;
+            }
+            let TurnGeometry {
+                own_mps,
+                before_mps,
+                gate,
+            } = *turn.get_or_insert_with(|| memo.turn_geometry(course_before_rad, &own));
+            if !gate.may_turn_toward(position_m - candidate.start_m) {
                 continue;
             }
             let target = track.state_at(candidate.start_elapsed_s);
-            let (own_mps, before_mps) =
-                *own_mps.get_or_insert_with(|| memo.turn_velocities(course_before_rad, &own));
             if is_port_turn_toward_vessel_moving(
                 course_before_rad,
                 (&own, own_mps, before_mps),

@@ -37,7 +37,7 @@ mod memo;
 mod observed;
 mod port_turns;
 mod prefixes;
-pub(crate) use memo::{Along, LegMemo};
+pub(crate) use memo::{Along, LegMemo, TurnGeometry};
 use port_turns::PortTurns;
 pub use port_turns::TurnSeen;
 pub(crate) use prefixes::LegPrefixes;
@@ -222,15 +222,22 @@ impl EncounterState {
         // Ownship's velocity, and as a new encounter sees it (its steady
         // course at its speed), worked out once for every target (decision
         // 54): the velocities `update_latch_steady` works out for each.
-        let own_velocity_mps = own_then.velocity_mps();
-        let seen_mps = if steady_course_rad.to_bits() == own_then.course_rad.to_bits() {
-            own_velocity_mps
+        // Along a leg, kept from piece to piece while the course and speed
+        // stay the same bits.
+        let (own_velocity_mps, seen_mps) = if let Some(along) = along.as_mut() {
+            along.own_velocities(own_then, steady_course_rad)
         } else {
-            VesselState {
-                course_rad: steady_course_rad,
-                ..*own_then
-            }
-            .velocity_mps()
+            let own_velocity_mps = own_then.velocity_mps();
+            let seen_mps = if steady_course_rad.to_bits() == own_then.course_rad.to_bits() {
+                own_velocity_mps
+            } else {
+                VesselState {
+                    course_rad: steady_course_rad,
+                    ..*own_then
+                }
+                .velocity_mps()
+            };
+            (own_velocity_mps, seen_mps)
         };
         // Whether the memo may be kept at this piece (decision 54).
         let steady = along

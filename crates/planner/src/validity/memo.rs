@@ -4,6 +4,7 @@
 
 use super::{Constraint, DVec2, LinearTrack, SafetyChecker, VesselState, no_risk_while_steady};
 use crate::safety::{StateVelocities, known_velocity};
+use vorrt_colregs::rules::PortTurnGate;
 
 impl<C: Constraint> SafetyChecker<'_, C> {
     /// The same checker without the memo of decision 54: each piece of a
@@ -46,40 +47,51 @@ pub(crate) struct LegMemo {
     /// on which no risk can arise while ownship keeps `seen_mps`
     /// ([`no_risk_while_steady`]), found on a piece with no encounter.
     pub(super) clear: Vec<Option<u8>>,
-    /// Ownship's velocities on a course turned to and on the course before
-    /// it ([`LegMemo::turn_velocities`]), with the (course turned to, course
-    /// before, speed) they were worked out for, as bits.
-    turn_mps: Option<([u64; 3], (DVec2, DVec2))>,
+    /// The last few turns asked of the settled-turn predicate
+    /// ([`LegMemo::turn_geometry`]), each with the (course turned to, course
+    /// before, speed) it was worked out for, as bits, and the next slot to
+    /// fill: a piece in a turn's window asks from up to four courses.
+    turns: ([KeptTurn; TURNS_KEPT], usize),
+    /// Ownship's velocity at a piece's end, and on the steady course as a
+    /// new encounter sees it ([`Along::own_velocities`]), each with the
+    /// course and speed it was worked out for: along a straight run every
+    /// piece asks for the same.
+    own_mps: (KnownVelocity, KnownVelocity),
 }
 
 impl LegMemo {
-    /// Ownship's velocity as `own` (on the course turned to) and on
-    /// `course_before_rad` at `own`'s speed ([`VesselState::velocity_mps`]),
-    /// the pair kept from the last call if worked out for the very same
-    /// courses and speed (the same bits): along a straight run every piece
-    /// asks the settled-turn predicate the same (decision 60).
-    pub(crate) fn turn_velocities(
+    /// The geometry of a turn from `course_before_rad` to `own`'s course
+    /// at `own`'s speed: ownship's velocity on each ([`VesselState::velocity_mps`])
+    /// and the bearing gate ([`PortTurnGate::new`]), kept from an earlier
+    /// ask for the very same courses and speed (the same bits): along a
+    /// straight run every piece asks the settled-turn predicate the same
+    /// (decision 60).
+    pub(crate) fn turn_geometry(
         &mut self,
         course_before_rad: f64,
         own: &VesselState,
-    ) -> (DVec2, DVec2) {
+    ) -> TurnGeometry {
         let key = [
             own.course_rad.to_bits(),
             course_before_rad.to_bits(),
             own.speed_mps.to_bits(),
         ];
-        match self.turn_mps {
-            Some((known, velocities)) if known == key => velocities,
-            _ => {
-                let before = VesselState {
-                    course_rad: course_before_rad,
-                    ..*own
-                };
-                let velocities = (own.velocity_mps(), before.velocity_mps());
-                self.turn_mps = Some((key, velocities));
-                velocities
-            }
+        let (kept, next) = &mut self.turns;
+        if let Some((_, geometry)) = kept.iter().flatten().find(|(known, _)| *known == key) {
+            return *geometry;
         }
+        let before = VesselState {
+            course_rad: course_before_rad,
+            ..*own
+        };
+        let geometry = TurnGeometry {
+            own_mps: own.velocity_mps(),
+            before_mps: before.velocity_mps(),
+            gate: PortTurnGate::new(course_before_rad, own.course_rad),
+        };
+        kept[*next] = Some((key, geometry));
+        *next = (*next + 1) % TURNS_KEPT;
+        geometry
     }
 
     /// Target `index`'s velocity, `target` its state ([`velocity_of`]: the
@@ -90,6 +102,24 @@ impl LegMemo {
         }
         velocity_of(&mut self.velocities[index], target)
     }
+}
+
+/// A turn kept by [`LegMemo::turn_geometry`]: the (course turned to, course
+/// before, speed) as bits, and its geometry.
+type KeptTurn = Option<([u64; 3], TurnGeometry)>;
+
+/// How many turns [`LegMemo::turn_geometry`] keeps.
+const TURNS_KEPT: usize = 4;
+
+/// A turn as the settled-turn predicate asks it ([`LegMemo::turn_geometry`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TurnGeometry {
+    /// Ownship's velocity on the course turned to, m/s.
+    pub(crate) own_mps: DVec2,
+    /// Ownship's velocity on the course before, at the same speed, m/s.
+    pub(crate) before_mps: DVec2,
+    /// The bearings no vessel turned toward can have.
+    pub(crate) gate: PortTurnGate,
 }
 
 /// How near, m/s, the velocity sailed over a piece must be to the velocity
@@ -139,6 +169,28 @@ impl Along<'_> {
             .copied()
             .flatten()
             .is_some_and(|stretch| self.tracks[index].stretch_at(self.elapsed_s) == Some(stretch))
+    }
+
+    /// Ownship's velocity as `own_then`, and on `steady_course_rad` at its
+    /// speed ([`VesselState::velocity_mps`]), each kept from an earlier
+    /// piece where worked out for the same bits ([`velocity_of`]).
+    pub(super) fn own_velocities(
+        &mut self,
+        own_then: &VesselState,
+        steady_course_rad: f64,
+    ) -> (DVec2, DVec2) {
+        let (own, seen) = &mut self.memo.own_mps;
+        let own_mps = velocity_of(own, own_then);
+        let seen_mps = if steady_course_rad.to_bits() == own_then.course_rad.to_bits() {
+            own_mps
+        } else {
+            let seen_then = VesselState {
+                course_rad: steady_course_rad,
+                ..*own_then
+            };
+            velocity_of(seen, &seen_then)
+        };
+        (own_mps, seen_mps)
     }
 
     /// `target`'s velocity: from the velocities worked out once where they

@@ -4,11 +4,12 @@ use super::*;
 use crate::PlannerConfig;
 use vorrt_jfs::TargetState;
 
-/// The settled-turn predicate's velocities kept in a leg's memo are
-/// those worked out afresh, bit for bit, whichever of the course turned
-/// to, the course before and the speed changes between two asks.
+/// The settled-turn predicate's velocities and gate kept in a leg's memo
+/// are those worked out afresh, bit for bit, whichever of the course
+/// turned to, the course before and the speed changes between two asks,
+/// with more turns asked in turn than the memo keeps.
 #[test]
-fn turn_velocities_are_reused_only_for_the_same_bits() {
+fn turn_geometry_is_reused_only_for_the_same_bits() {
     let mut memo = LegMemo::default();
     let own = VesselState::new(DVec2::ZERO, 0.3, 6.0, 100.0);
     let fresh = |before_rad: f64, own: &VesselState| {
@@ -16,19 +17,18 @@ fn turn_velocities_are_reused_only_for_the_same_bits() {
             course_rad: before_rad,
             ..*own
         };
-        (own.velocity_mps(), before.velocity_mps())
+        (
+            own.velocity_mps(),
+            before.velocity_mps(),
+            vorrt_colregs::rules::PortTurnGate::new(before_rad, own.course_rad),
+        )
     };
+    let turned = |course_rad| VesselState { course_rad, ..own };
     let asks = [
         (1.2, own),
         (1.2, own),
         (1.3, own),
-        (
-            1.3,
-            VesselState {
-                course_rad: 0.4,
-                ..own
-            },
-        ),
+        (1.3, turned(0.4)),
         (
             1.3,
             VesselState {
@@ -37,18 +37,19 @@ fn turn_velocities_are_reused_only_for_the_same_bits() {
             },
         ),
         (1.2, own),
+        (1.4, turned(0.5)),
+        (1.5, turned(0.6)),
+        (1.6, turned(0.7)),
+        (1.2, own),
+        (1.3, turned(0.4)),
     ];
+    let bits = |velocity: DVec2| velocity.to_array().map(f64::to_bits);
     for (before_rad, own) in asks {
-        let (own_mps, before_mps) = memo.turn_velocities(before_rad, &own);
-        let (want_own, want_before) = fresh(before_rad, &own);
-        assert_eq!(
-            own_mps.to_array().map(f64::to_bits),
-            want_own.to_array().map(f64::to_bits)
-        );
-        assert_eq!(
-            before_mps.to_array().map(f64::to_bits),
-            want_before.to_array().map(f64::to_bits)
-        );
+        let geometry = memo.turn_geometry(before_rad, &own);
+        let (want_own, want_before, want_gate) = fresh(before_rad, &own);
+        assert_eq!(bits(geometry.own_mps), bits(want_own));
+        assert_eq!(bits(geometry.before_mps), bits(want_before));
+        assert_eq!(geometry.gate, want_gate);
     }
     // A target's velocity asked before the latch step sized the memo.
     let target = VesselState::new(DVec2::new(100.0, 0.0), 2.0, 4.0, 50.0);
