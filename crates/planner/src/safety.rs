@@ -422,6 +422,25 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         self.check_settled_turn_reusing(course_before_rad, candidate, &mut LegMemo::default())
     }
 
+    /// Whether some target that may matter is within MTD of `candidate`'s
+    /// start: the first test of a port turn toward a vessel
+    /// ([`check_settled_turn_reusing`](Self::check_settled_turn_reusing)).
+    /// Without one no port turn there is toward a vessel, from whatever
+    /// course and onto whatever course, so the courses an observer sees
+    /// need not be worked out (decision 57).
+    pub(crate) fn any_within_mtd(&self, candidate: &Move) -> bool {
+        self.tracks
+            .iter()
+            .enumerate()
+            .any(|(index, track)| self.may_reach(index) && self.within_mtd_at(track, candidate))
+    }
+
+    /// Whether `track`'s vessel is within MTD of `candidate`'s start.
+    fn within_mtd_at(&self, track: &LinearTrack, candidate: &Move) -> bool {
+        let position_m = track.position_at(candidate.start_elapsed_s);
+        vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), &self.config.rules)
+    }
+
     /// [`check_settled_turn`](Self::check_settled_turn) with a leg's
     /// `memo`: ownship's velocities on the course turned to and the course
     /// before, and each target's, reused from an earlier piece where worked
@@ -458,10 +477,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             // starboard of the course before (its bearing tests, by the
             // gate's dot products: decision 46); for those its full state,
             // dearer than its position, is not needed.
-            let position_m = track.position_at(candidate.start_elapsed_s);
-            if !vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), rules) {
+            if !self.within_mtd_at(track, candidate) {
                 continue;
             }
+            let position_m = track.position_at(candidate.start_elapsed_s);
             let TurnGeometry {
                 own_mps,
                 before_mps,

@@ -127,6 +127,11 @@ impl<'l> PortTurns<'l> {
         let Some(poses) = &self.poses else {
             return Ok(());
         };
+        // No vessel within MTD: no course judged from makes a port turn
+        // toward one, and the observer's courses are not worked out.
+        if !checker.any_within_mtd(candidate) {
+            return Ok(());
+        }
         let (over_ground_rad, seen_before_rad) =
             observed::observed_turn_rad(poses, candidate.start_elapsed_s - self.start_elapsed_s);
         let seen = Move {

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::PlannerConfig;
+use vorrt_geometry::angle;
 use vorrt_jfs::TargetState;
 
 /// The settled-turn predicate's velocities and gate kept in a leg's memo
@@ -92,4 +93,60 @@ fn a_target_passing_clear_is_remembered_on_the_straight_run() {
     state.advance_reusing(&own_then, 0.0, &checker, (30.0, None), &mut memo);
     assert_eq!(memo.clear, [None]);
     assert_eq!(state.latches, [None]);
+}
+
+/// The port-turn judgement's first test, asked alone (`any_within_mtd`):
+/// where it says no vessel is within MTD, no port turn from any course onto
+/// any course is refused; where it says one is, some port turn is. Vessels
+/// on a ring of bearings either side of MTD (5 nm), crossing or meeting.
+#[test]
+fn no_port_turn_is_toward_a_vessel_beyond_mtd() {
+    let config = PlannerConfig::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+    let mtd_m = config.rules.mtd_m;
+    let (mut within, mut refused_within) = (0, 0);
+    for range_m in [0.5 * mtd_m, 0.9 * mtd_m, 1.01 * mtd_m, 1.5 * mtd_m] {
+        for bearing_deg in (0..360).step_by(30) {
+            for course_deg in [90.0f64, 180.0, 270.0] {
+                let bearing_rad = f64::from(bearing_deg).to_radians();
+                let start_m = DVec2::new(bearing_rad.sin(), bearing_rad.cos()) * range_m;
+                let vessel = VesselState::new(start_m, course_deg.to_radians(), 6.0, 100.0);
+                let tracks = [TargetState::constant_velocity(vessel).track()];
+                let checker =
+                    SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 20_000.0), 0.0);
+                let mut any_refused = false;
+                for turn_deg in [-35.0f64, -60.0, -90.0] {
+                    for before_deg in [0.0f64, 45.0, 90.0] {
+                        let course_rad = (before_deg + turn_deg).to_radians();
+                        let candidate = Move {
+                            start_m: DVec2::ZERO,
+                            start_elapsed_s: 0.0,
+                            course_rad,
+                            velocity_mps: angle::velocity(course_rad, 6.0),
+                            duration_s: 10.0,
+                        };
+                        let refused = checker
+                            .check_settled_turn(before_deg.to_radians(), &candidate)
+                            .is_err();
+                        let near = checker.any_within_mtd(&candidate);
+                        assert!(
+                            near || !refused,
+                            "refused beyond MTD: {range_m} m, {bearing_deg}°, {course_deg}°"
+                        );
+                        assert_eq!(near, range_m < mtd_m);
+                        any_refused |= refused;
+                    }
+                }
+                if range_m < mtd_m {
+                    within += 1;
+                    refused_within += usize::from(any_refused);
+                }
+            }
+        }
+    }
+    // The test would pass vacuously if no turn were ever refused.
+    assert!(
+        within > 0 && refused_within > 0,
+        "{refused_within} of {within}"
+    );
 }
