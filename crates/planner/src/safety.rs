@@ -429,16 +429,17 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// course and onto whatever course, so the courses an observer sees
     /// need not be worked out (decision 57).
     pub(crate) fn any_within_mtd(&self, candidate: &Move) -> bool {
-        self.tracks
-            .iter()
-            .enumerate()
-            .any(|(index, track)| self.may_reach(index) && self.within_mtd_at(track, candidate))
+        self.tracks.iter().enumerate().any(|(index, track)| {
+            self.may_reach(index) && self.within_mtd_at(track, candidate).is_some()
+        })
     }
 
-    /// Whether `track`'s vessel is within MTD of `candidate`'s start.
-    fn within_mtd_at(&self, track: &LinearTrack, candidate: &Move) -> bool {
+    /// Where `track`'s vessel is at `candidate`'s start, if within MTD of
+    /// ownship then.
+    fn within_mtd_at(&self, track: &LinearTrack, candidate: &Move) -> Option<DVec2> {
         let position_m = track.position_at(candidate.start_elapsed_s);
         vorrt_colregs::rules::within_mtd(candidate.start_m.distance(position_m), &self.config.rules)
+            .then_some(position_m)
     }
 
     /// [`check_settled_turn`](Self::check_settled_turn) with a leg's
@@ -477,10 +478,9 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
             // starboard of the course before (its bearing tests, by the
             // gate's dot products: decision 46); for those its full state,
             // dearer than its position, is not needed.
-            if !self.within_mtd_at(track, candidate) {
+            let Some(position_m) = self.within_mtd_at(track, candidate) else {
                 continue;
-            }
-            let position_m = track.position_at(candidate.start_elapsed_s);
+            };
             let TurnGeometry {
                 own_mps,
                 before_mps,
