@@ -502,6 +502,15 @@ pub(crate) fn return_to_goal<M: MotionModel, V: MotionValidator>(
         .filter(|_| at_service && past_and_clear(&hold.state));
     for (offset_deg, holds_m) in astern.into_iter().chain(short_of) {
         let course_rad = angle::normalize_2pi(goal_course_rad + offset_deg.to_radians());
+        if offset_deg < 0.0 && angle::normalize_pi(course_rad - hold.leg.start_course_rad) < 0.0 {
+            // Astern of the vessel only on a course still to starboard of
+            // the one held before the alteration: further round it is a
+            // port alteration from the course an observer saw ownship act
+            // on, and for the vessel ownship first met head-on a
+            // starboard-to-starboard pass (rule 14(a)) or, for one crossing
+            // from port, a port turn for her (rule 17(c); decision 72).
+            continue;
+        }
         if offset_deg > 0.0
             && angle::normalize_pi(course_rad - pose.course_rad) >= -SHORT_OF_DEG[0].to_radians()
         {

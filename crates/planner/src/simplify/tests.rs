@@ -257,18 +257,18 @@ impl MotionValidator for ReturnRefused {
 
 /// The fixture of the returns' tests: a 300 m turning radius, the goal
 /// 12 km north, and 2 km held on 045 at 6 m/s from the origin with no
-/// encounter in force.
-fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, SimplifiedLeg) {
+/// encounter in force, turned onto from `before_deg` (the course held
+/// before the alteration).
+fn held_2_km_on_045_from(before_deg: f64) -> (RateLimitedTurn, DVec2, SimplifiedLeg) {
     let model = RateLimitedTurn {
         turn_radius_m: 300.0,
     };
-    let course_rad = 45f64.to_radians();
     let hold = model.turn_onto(
         Pose {
             position_m: DVec2::ZERO,
-            course_rad,
+            course_rad: before_deg.to_radians(),
         },
-        course_rad,
+        45f64.to_radians(),
         6.0,
         2000.0,
     );
@@ -278,6 +278,13 @@ fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, SimplifiedLeg) {
         state: EncounterState::default(),
     };
     (model, DVec2::new(0.0, 12_000.0), hold)
+}
+
+/// As [`held_2_km_on_045_from`], from 300°: every course astern of a vessel
+/// ([`ASTERN_DEG`] to port of the goal's bearing, about 352°) is still to
+/// starboard of the course held before the alteration.
+fn held_2_km_on_045() -> (RateLimitedTurn, DVec2, SimplifiedLeg) {
+    held_2_km_on_045_from(300.0)
 }
 
 /// Where the leg to the goal is refused for turning to port onto a vessel
@@ -377,6 +384,42 @@ fn a_return_course_refused_is_not_asked_again_held_longer() {
         };
         assert!((straight_m - shortest_m).abs() < 1e-6, "{judged:?}");
     }
+}
+
+/// A course astern of a vessel that lies to port of the course held before
+/// the alteration is not tried (decision 72): it would be a port
+/// alteration from the course ownship acted on, for a vessel first met
+/// head-on a starboard-to-starboard pass. Only the courses part of the way
+/// back are, after the leg to the goal.
+#[test]
+fn no_course_astern_is_to_port_of_the_course_before_the_alteration() {
+    // Held on 045 from 000: every course astern (some 336°, 321° and 306°)
+    // is to port of 000.
+    let (model, goal_m, hold) = held_2_km_on_045_from(0.0);
+    let validator = ReturnRefused::new(hold.leg.end_m(), goal_m, true);
+    assert!(return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m).is_none());
+    let judged = validator.judged.into_inner();
+    assert_eq!(judged.len(), 1 + SHORT_OF_DEG.len(), "{judged:?}");
+    let goal_course_rad = angle::unit_to_course(goal_m - hold.leg.end_m());
+    for (course_rad, _) in &judged[1..] {
+        assert!(
+            angle::normalize_pi(course_rad - goal_course_rad) > 0.0,
+            "{judged:?}"
+        );
+    }
+    // From 315°: the first two (some 336° and 321°) are to starboard of it
+    // and tried, the third (306°) is not.
+    let (model, goal_m, hold) = held_2_km_on_045_from(315.0);
+    let validator = ReturnRefused::new(hold.leg.end_m(), goal_m, true);
+    assert!(return_to_goal(&model, &validator, &hold, Speeds::constant(6.0), goal_m).is_none());
+    let judged = validator.judged.into_inner();
+    let astern = judged[1..]
+        .iter()
+        .filter(|(course_rad, _)| {
+            angle::normalize_pi(course_rad - angle::unit_to_course(goal_m - hold.leg.end_m())) < 0.0
+        })
+        .count();
+    assert_eq!(astern, 2, "{judged:?}");
 }
 
 /// A validator of the legs' shape alone: `refuses` says which legs it
