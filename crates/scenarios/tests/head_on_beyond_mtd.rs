@@ -41,10 +41,10 @@ fn head_on(name: &str, (east_m, north_m): (f64, f64), course_deg: f64, speed_kn:
     Scenario::from_ron_str(&text, name).expect("a valid scenario")
 }
 
-/// The target's side at the closest approach (positive: on ownship's port
-/// side, as ownship then heads), the distance then, and the largest turn to
-/// port of ownship's first course before it, degrees.
-fn passing(scenario: &Scenario) -> (f64, f64, f64) {
+/// Whether the target is on ownship's port side at the closest approach (as
+/// ownship then heads), the distance then, and the largest turn to port of
+/// ownship's first course before it, degrees.
+fn passing(scenario: &Scenario) -> (bool, f64, f64) {
     let record = simulate(scenario, 1).expect("valid settings");
     let evaluation = evaluate(scenario, &record);
     assert!(evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision);
@@ -57,15 +57,17 @@ fn passing(scenario: &Scenario) -> (f64, f64, f64) {
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .expect("recorded steps");
     let own = &record.ownship[closest];
-    let relative = record.targets[0][closest].position_m - own.position_m;
-    let heading = glam::DVec2::new(own.course_rad.sin(), own.course_rad.cos());
-    let side = heading.perp_dot(relative);
+    let to_port = vorrt_colregs::rules::is_on_port_side(
+        own.position_m,
+        own.course_rad,
+        record.targets[0][closest].position_m,
+    );
     let first_rad = record.ownship[0].course_rad;
     let most_to_port_deg = record.ownship[..closest]
         .iter()
         .map(|own| -vorrt_geometry::angle::normalize_pi(own.course_rad - first_rad).to_degrees())
         .fold(0.0, f64::max);
-    (side, distance_m, most_to_port_deg)
+    (to_port, distance_m, most_to_port_deg)
 }
 
 #[test]
@@ -74,9 +76,9 @@ fn a_vessel_met_head_on_beyond_mtd_is_passed_port_to_port() {
         head_on("trafficgen-185-HO", (226.0, 16_697.2), 181.4, 15.2),
         head_on("trafficgen-194-HO", (-712.4, 14_287.2), 174.18, 11.7),
     ] {
-        let (side, distance_m, most_to_port_deg) = passing(&scenario);
+        let (to_port, distance_m, most_to_port_deg) = passing(&scenario);
         assert!(
-            side > 0.0,
+            to_port,
             "{}: passed starboard to starboard, {distance_m:.0} m",
             scenario.name
         );
@@ -113,7 +115,7 @@ proptest! {
         let start = (miss_m - run_m * course_rad.sin(), own_mps * meet_s - run_m * course_rad.cos());
         prop_assume!(start.0.hypot(start.1) > 5.0 * 1852.0);
         let scenario = head_on("head-on-beyond-mtd", start, 180.0 + offset_deg, speed_kn);
-        let (side, distance_m, _) = passing(&scenario);
-        prop_assert!(side > 0.0, "passed starboard to starboard, {:.0} m", distance_m);
+        let (to_port, distance_m, _) = passing(&scenario);
+        prop_assert!(to_port, "passed starboard to starboard, {:.0} m", distance_m);
     }
 }
