@@ -8,8 +8,9 @@ pub use crate::encounter::EncounterLatch;
 use crate::encounter::{Encounter, Role, classify};
 use crate::parameters::RuleParameters;
 use crate::risk::assess_risk_moving;
-use crate::rules::within_mtd;
+use crate::rules::{course_change_rad, is_close_approach, within_mtd};
 use crate::vessel::VesselState;
+use vorrt_geometry::closest_point_of_approach;
 
 /// Whether ownship and the target have passed each other: the range is
 /// opening and the velocities point more than
@@ -201,6 +202,83 @@ pub fn update_latch_seen_moving(
     )
 }
 
+/// As [`update_latch_steady`], for a judge of a recorded track (the
+/// evaluation, `vorrt judge`): a vessel beyond MTD but nearer than
+/// [`early_action_range_m`](RuleParameters::early_action_range_m) is also
+/// latched at a sample where a turn of ownship to starboard shows
+/// (`own.course_rad` more than
+/// [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) to starboard
+/// of `steady_course_rad`) if, on the course held before the turn, she would be
+/// a risk of collision but for the range (closest approach ahead and under
+/// the pair's risk distance) in an encounter where ownship gives way
+/// (head-on, crossing from starboard, overtaking). A turn made that early
+/// for such a vessel is ownship's action for her (rules 7(b), 8(a), 16),
+/// as an observer classifying the situation from its start sees it; latched
+/// only once within MTD, on the new course, a later turn back across her
+/// bow would be judged as no encounter or a crossing (decision 73). A
+/// vessel ownship would stand on for is not latched early: until risk of
+/// collision exists ownship is free to act so that no stand-on situation
+/// arises. The planner does not latch early; decision 72 keeps its
+/// returns to starboard of the course held before an alteration.
+///
+/// ```
+/// use vorrt_colregs::{update_latch_judged, update_latch_steady, Encounter, RuleParameters, VesselState};
+/// use glam::DVec2;
+/// let params = RuleParameters::default();
+/// // 8 nm off, a vessel head-on on the course held (north); ownship turning to starboard.
+/// let own = VesselState::new(DVec2::ZERO, 20f64.to_radians(), 6.0, 100.0);
+/// let target = VesselState::new(DVec2::new(0.0, 8.0 * 1852.0), std::f64::consts::PI, 6.0, 100.0);
+/// assert_eq!(update_latch_steady(None, &own, 0.0, &target, 0.0, &params), None);
+/// let latch = update_latch_judged(None, &own, 0.0, &target, 0.0, &params).expect("early action");
+/// assert_eq!(latch.encounter, Encounter::HeadOn);
+/// assert_eq!(latch.reference_course_rad, 0.0);
+/// // Not turning: nothing is latched beyond MTD.
+/// assert_eq!(update_latch_judged(None, &own, own.course_rad, &target, 0.0, &params), None);
+/// ```
+#[must_use]
+pub fn update_latch_judged(
+    current: Option<EncounterLatch>,
+    own: &VesselState,
+    steady_course_rad: f64,
+    target: &VesselState,
+    time_s: f64,
+    parameters: &RuleParameters,
+) -> Option<EncounterLatch> {
+    let latch = update_latch_steady(current, own, steady_course_rad, target, time_s, parameters);
+    if latch.is_some() || current.is_some() {
+        return latch;
+    }
+    let range_m = own.range_to(target);
+    // Only a turn to starboard is the action of a vessel that gives way
+    // (rules 14(a), 15, 16); a bend of the route to port is not taken for one.
+    let turning =
+        course_change_rad(steady_course_rad, own.course_rad) > parameters.turn_tolerance_rad;
+    if !turning || within_mtd(range_m, parameters) || range_m >= parameters.early_action_range_m {
+        return None;
+    }
+    let seen = VesselState {
+        course_rad: steady_course_rad,
+        ..*own
+    };
+    let cpa = closest_point_of_approach(
+        seen.position_m,
+        seen.velocity_mps(),
+        target.position_m,
+        target.velocity_mps(),
+    );
+    let risk_distance_m = parameters.risk_distance_m(own.length_m, target.length_m);
+    if !(cpa.time_s > 0.0 && is_close_approach(&cpa, risk_distance_m)) {
+        return None;
+    }
+    match classify(&seen, target, parameters) {
+        encounter if encounter.role() != Role::GiveWay => None,
+        encounter if has_passed(own, target, encounter, parameters) => None,
+        encounter => {
+            Some(EncounterLatch::new(encounter, &seen, time_s).with_risk_distance(risk_distance_m))
+        }
+    }
+}
+
 /// The one step behind [`update_latch_steady`],
 /// [`update_latch_steady_moving`] and [`update_latch_seen_moving`], with
 /// ownship's and the target's velocities given by `velocities` (asked for
@@ -368,6 +446,46 @@ mod tests {
         assert_eq!(
             update_latch_steady(None, &own, 1.5 * PI, &target, 0.0, &params),
             None
+        );
+    }
+
+    /// Decision 73: beyond MTD a turn latches only a vessel ownship would
+    /// give way to on the course held, within the early-action range.
+    #[test]
+    fn a_judged_latch_beyond_mtd_needs_a_turn_a_give_way_duty_and_the_range() {
+        let params = RuleParameters::default();
+        let turned = VesselState::new(DVec2::ZERO, 30f64.to_radians(), 6.0, 100.0);
+        let at = |x_m: f64, y_m: f64, course_deg: f64| {
+            VesselState::new(DVec2::new(x_m, y_m), course_deg.to_radians(), 6.0, 100.0)
+        };
+        // From starboard, 7 km east and 7 km north heading west: give way.
+        let starboard = at(7000.0, 7000.0, 270.0);
+        let latch = update_latch_judged(None, &turned, 0.0, &starboard, 5.0, &params);
+        assert_eq!(latch.map(|l| l.encounter), Some(Encounter::CrossingGiveWay));
+        assert_eq!(latch.map(|l| l.latched_at_s), Some(5.0));
+        // From port, heading east: ownship would stand on; not latched early.
+        let port = at(-7000.0, 7000.0, 90.0);
+        assert_eq!(
+            update_latch_judged(None, &turned, 0.0, &port, 5.0, &params),
+            None
+        );
+        // Head-on, beyond the early-action range: not latched.
+        let far = at(0.0, params.early_action_range_m + 100.0, 180.0);
+        assert_eq!(
+            update_latch_judged(None, &turned, 0.0, &far, 5.0, &params),
+            None
+        );
+        // A miss of 2 nm on the course held: no risk, not latched.
+        let wide = at(2.0 * 1852.0, 8.0 * 1852.0, 180.0);
+        assert_eq!(
+            update_latch_judged(None, &turned, 0.0, &wide, 5.0, &params),
+            None
+        );
+        // Within MTD it is the steady latch.
+        let near = at(0.0, 6000.0, 180.0);
+        assert_eq!(
+            update_latch_judged(None, &turned, 0.0, &near, 5.0, &params),
+            update_latch_steady(None, &turned, 0.0, &near, 5.0, &params)
         );
     }
 

@@ -55,6 +55,16 @@ pub struct RuleParameters {
     /// arose beyond it (Woerner 2019), and a turn at a bounded rate of turn
     /// shows over ground a little after it begins.
     pub give_way_action_range_m: f64,
+    /// Range out to which a judge of a recorded track counts a turn as
+    /// action taken for a vessel beyond MTD that ownship would give way
+    /// to on the course it held before the turn
+    /// ([`update_latch_judged`](crate::update_latch_judged), decision 73).
+    /// Default 10 nm (18 520 m): long-range scanning (rule 7(b)) on the
+    /// 12 nm radar range, and about 30 minutes before the closest approach
+    /// at a closing speed of 20 kn, where an independent evaluator
+    /// classifies a situation from its start (DNV trafficgen situations
+    /// begin 7-9 nm off).
+    pub early_action_range_m: f64,
 }
 
 impl Default for RuleParameters {
@@ -72,6 +82,7 @@ impl Default for RuleParameters {
             stand_on_action_range_m: 2.0 * 1852.0,
             apparent_turn_rad: 30f64.to_radians(),
             give_way_action_range_m: 2.5 * 1852.0,
+            early_action_range_m: 10.0 * 1852.0,
         }
     }
 }
@@ -109,6 +120,7 @@ impl RuleParameters {
             ("risk_cpa_m", self.risk_cpa_m),
             ("stand_on_action_range_m", self.stand_on_action_range_m),
             ("give_way_action_range_m", self.give_way_action_range_m),
+            ("early_action_range_m", self.early_action_range_m),
         ];
         for (field, value) in positive {
             if !(value.is_finite() && value > 0.0) {

@@ -1,7 +1,7 @@
 //! The recording an assessment reads: samples of both vessels in time, and the
 //! first encounter latched in them.
 
-use crate::latch::{EncounterLatch, update_latch_steady};
+use crate::latch::{EncounterLatch, update_latch_judged};
 use crate::parameters::RuleParameters;
 use crate::rules::steady_course_rad;
 use crate::vessel::VesselState;
@@ -36,7 +36,7 @@ impl EncounterSample {
     }
 }
 
-/// The first encounter latched in a recording: runs [`update_latch_steady`]
+/// The first encounter latched in a recording: runs [`update_latch_judged`]
 /// over the samples in order, with ownship's steady course at each
 /// ([`steady_courses_rad`]), and returns the first latch it makes.
 #[must_use]
@@ -45,7 +45,7 @@ pub fn first_latch(samples: &[EncounterSample], rules: &RuleParameters) -> Optio
         .iter()
         .zip(steady_courses_rad(samples))
         .find_map(|(sample, steady_course_rad)| {
-            update_latch_steady(
+            update_latch_judged(
                 None,
                 &sample.own,
                 steady_course_rad,

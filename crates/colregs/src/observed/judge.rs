@@ -16,7 +16,7 @@ use crate::compliance::{
     assess_encounter_acting, first_latch, safety_score, steady_courses_rad,
 };
 use crate::error::ColregsError;
-use crate::latch::{EncounterLatch, update_latch_steady};
+use crate::latch::{EncounterLatch, update_latch_judged};
 use crate::vessel::VesselState;
 use serde::{Deserialize, Serialize};
 
@@ -340,7 +340,7 @@ fn duties_at(
             .zip(duties.iter_mut())
             .zip(steady.iter().flatten())
         {
-            latch = update_latch_steady(
+            latch = update_latch_judged(
                 latch,
                 &sample.own,
                 *steady_course_rad,

@@ -223,6 +223,76 @@ fn head_on_alteration_eased_back_before_the_closest_approach_is_not_held() {
     );
 }
 
+/// Head-on at 6 m/s each from 16 km (8.6 nm, beyond MTD), as a DNV
+/// trafficgen situation begins: ownship's steering law.
+fn head_on_from_beyond_mtd(own_steer: impl Fn(f64, DVec2, DVec2) -> f64) -> ObservedJudgement {
+    judged(&sail(
+        Sailor::new(0.0, 0.0, 0.0, 6.0, own_steer),
+        Sailor::holding(0.0, 16_000.0, 180.0, 6.0),
+        2400.0,
+    ))
+}
+
+/// Decision 73, the pattern of trafficgen runs 179-199 before decision 72:
+/// ownship alters 40° to starboard at once, 8.6 nm off a vessel met
+/// head-on, then at 500 s swings 80° to port across her bow to 40° port
+/// of its first course and passes her starboard to starboard. Latched only
+/// within MTD, on the course then steered, the swing went unseen; judged
+/// from the course held before the first turn, it is a head-on encounter
+/// passed starboard to starboard (rule 14(a)).
+#[test]
+fn a_swing_to_port_across_the_bow_of_a_vessel_met_head_on_beyond_mtd_is_a_finding() {
+    let judgement =
+        head_on_from_beyond_mtd(|time_s, _, _| if time_s < 500.0 { 40.0 } else { -40.0 });
+    let target = &judgement.targets[0];
+    let latch = target.latch.expect("early action latches");
+    assert_eq!(latch.encounter, Encounter::HeadOn);
+    assert!(latch.reference_course_rad.abs() < 1e-9);
+    assert!(latch.latched_at_s < 60.0, "{}", latch.latched_at_s);
+    let names = findings(&judgement);
+    assert!(names.contains(&"starboard_to_starboard"), "{names:?}");
+    assert!(!judgement.compliant);
+}
+
+/// The same early alteration held until the vessel is abaft, then the
+/// return: judged from the course held before it, and no finding.
+#[test]
+fn an_early_alteration_beyond_mtd_held_until_past_has_no_finding() {
+    let judgement = head_on_from_beyond_mtd(
+        |_, own, target| {
+            if target.y > own.y - 500.0 { 40.0 } else { 0.0 }
+        },
+    );
+    let target = &judgement.targets[0];
+    let latch = target.latch.expect("early action latches");
+    assert_eq!(latch.encounter, Encounter::HeadOn);
+    assert!(latch.latched_at_s < 60.0, "{}", latch.latched_at_s);
+    assert!(target.findings.is_empty(), "{:?}", findings(&judgement));
+}
+
+/// A vessel ownship would stand on for is not latched early: a turn made
+/// beyond MTD, before risk of collision exists, keeps a stand-on
+/// situation from arising and is no departure from rule 17.
+#[test]
+fn an_early_turn_for_a_vessel_crossing_from_port_is_no_stand_on_departure() {
+    // From port, 10 km west and 10 km north, heading east; ownship turns
+    // 60° to starboard at once and holds it.
+    let judgement = judged(&sail(
+        Sailor::new(0.0, 0.0, 0.0, 6.0, |_, _, _| 60.0),
+        Sailor::holding(-10_000.0, 10_000.0, 90.0, 6.0),
+        2400.0,
+    ));
+    let target = &judgement.targets[0];
+    assert!(
+        target
+            .latch
+            .is_none_or(|latch| latch.encounter != Encounter::CrossingStandOn),
+        "{:?}",
+        target.latch
+    );
+    assert!(target.findings.is_empty(), "{:?}", findings(&judgement));
+}
+
 /// Crossing from starboard: the target 6 km east and `north_m` north,
 /// heading west at 6 m/s; ownship north at 6 m/s.
 fn crossing(own_steer: impl Fn(f64, DVec2, DVec2) -> f64, north_m: f64) -> ObservedJudgement {
