@@ -202,19 +202,13 @@ pub fn update_latch_seen_moving(
     )
 }
 
-/// How far to starboard of the course held a turn must show before
-/// [`update_latch_judged`] takes it for action for a vessel beyond MTD,
-/// radians (10°): a "starboard manoeuvre" in the NTNU evaluator (Hagen et
-/// al., 2023), well above the wander of a course over ground observed from
-/// AIS, so that noise on a course held latches nothing early.
-pub const EARLY_ACTION_TURN_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
-
 /// As [`update_latch_steady`], for a judge of a recorded track (the
 /// evaluation, `vorrt judge`): a vessel beyond MTD but nearer than
 /// [`early_action_range_m`](RuleParameters::early_action_range_m) is also
 /// latched at a sample where a turn of ownship to starboard shows
-/// (`own.course_rad` more than [`EARLY_ACTION_TURN_RAD`] to starboard of
-/// `steady_course_rad`) if, on the course held before the turn, she would be
+/// (`own.course_rad` more than
+/// [`turn_tolerance_rad`](RuleParameters::turn_tolerance_rad) to starboard
+/// of `steady_course_rad`) if, on the course held before the turn, she would be
 /// a risk of collision but for the range (closest approach ahead and under
 /// the pair's risk distance) in an encounter where ownship gives way
 /// (head-on, crossing from starboard, overtaking). A turn made that early
@@ -257,7 +251,8 @@ pub fn update_latch_judged(
     let range_m = own.range_to(target);
     // Only a turn to starboard is the action of a vessel that gives way
     // (rules 14(a), 15, 16); a bend of the route to port is not taken for one.
-    let turning = course_change_rad(steady_course_rad, own.course_rad) > EARLY_ACTION_TURN_RAD;
+    let turning =
+        course_change_rad(steady_course_rad, own.course_rad) > parameters.turn_tolerance_rad;
     if !turning || within_mtd(range_m, parameters) || range_m >= parameters.early_action_range_m {
         return None;
     }

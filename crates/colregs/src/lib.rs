@@ -24,8 +24,8 @@ pub use compliance::{
 pub use encounter::{Encounter, Role, classify};
 pub use error::ColregsError;
 pub use latch::{
-    EARLY_ACTION_TURN_RAD, EncounterLatch, has_passed, has_passed_moving, update_latch,
-    update_latch_judged, update_latch_seen_moving, update_latch_steady, update_latch_steady_moving,
+    EncounterLatch, has_passed, has_passed_moving, update_latch, update_latch_judged,
+    update_latch_seen_moving, update_latch_steady, update_latch_steady_moving,
 };
 pub use maneuver::{
     CandidateMotion, ManeuverViolation, check_action, check_alteration, check_heading,
