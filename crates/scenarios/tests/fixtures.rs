@@ -147,9 +147,9 @@ fn multi_vessel_has_three_targets_on_collision_courses() {
     }
 }
 
-/// The report agrees with the fixture's description: ownship gives way to
-/// TS2, and that alteration clears TS1 and TS3 before risk arises with them
-/// (no encounter latched).
+/// The report agrees with the fixture's description: ownship alters at
+/// once, TS1 and TS3 still beyond MTD, and the judges take that alteration
+/// as its action for all three (decision 73).
 #[test]
 fn multi_vessel_report_agrees_with_its_description() {
     let scenario = paper("multi_vessel");
@@ -163,13 +163,13 @@ fn multi_vessel_report_agrees_with_its_description() {
     assert_eq!(
         classes,
         [
-            vorrt_colregs::Encounter::None,
+            vorrt_colregs::Encounter::HeadOn,
             vorrt_colregs::Encounter::CrossingGiveWay,
-            vorrt_colregs::Encounter::None
+            vorrt_colregs::Encounter::CrossingGiveWay
         ]
     );
     let description = scenario.description.expect("described");
-    assert!(description.contains("TS2 as crossing_give_way and TS1 and TS3 as none"));
+    assert!(description.contains("TS1 as head_on and TS2 and TS3 as crossing_give_way"));
 }
 
 #[test]
