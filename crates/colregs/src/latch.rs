@@ -7,10 +7,9 @@
 pub use crate::encounter::EncounterLatch;
 use crate::encounter::{Encounter, Role, classify};
 use crate::parameters::RuleParameters;
-use crate::risk::assess_risk_moving;
-use crate::rules::{course_change_rad, is_close_approach, within_mtd};
+use crate::risk::{assess_risk, assess_risk_moving};
+use crate::rules::{course_change_rad, within_mtd};
 use crate::vessel::VesselState;
-use vorrt_geometry::closest_point_of_approach;
 
 /// Whether ownship and the target have passed each other: the range is
 /// opening and the velocities point more than
@@ -260,16 +259,16 @@ pub fn update_latch_judged(
         course_rad: steady_course_rad,
         ..*own
     };
-    let cpa = closest_point_of_approach(
-        seen.position_m,
-        seen.velocity_mps(),
-        target.position_m,
-        target.velocity_mps(),
-    );
-    let risk_distance_m = parameters.risk_distance_m(own.length_m, target.length_m);
-    if !(cpa.time_s > 0.0 && is_close_approach(&cpa, risk_distance_m)) {
+    // The one risk judgement (rule 7), with MTD widened to the early-action
+    // range: the range was checked above.
+    let early = RuleParameters {
+        mtd_m: parameters.early_action_range_m,
+        ..*parameters
+    };
+    if !assess_risk(&seen, target, &early).at_risk {
         return None;
     }
+    let risk_distance_m = parameters.risk_distance_m(own.length_m, target.length_m);
     match classify(&seen, target, parameters) {
         encounter if encounter.role() != Role::GiveWay => None,
         encounter if has_passed(own, target, encounter, parameters) => None,
