@@ -217,8 +217,8 @@ pub fn update_latch_seen_moving(
 /// bow would be judged as no encounter or a crossing (decision 73). A
 /// vessel ownship would stand on for is not latched early: until risk of
 /// collision exists ownship is free to act so that no stand-on situation
-/// arises. The planner does not latch early; decision 72 keeps its
-/// returns to starboard of the course held before an alteration.
+/// arises. The planner latches the same way once its turn is readily
+/// apparent (decision 74), and holds the alteration until she is past.
 ///
 /// ```
 /// use vorrt_colregs::{update_latch_judged, update_latch_steady, Encounter, RuleParameters, VesselState};

@@ -370,7 +370,8 @@ mod tests {
     #[test]
     fn a_weaker_level_that_would_repeat_a_failed_search_draws_the_same() {
         // The blocked goal, with no encounter ever latched (a latch needs the
-        // target within MTD): every refusal is for safety.
+        // target within MTD, or within the early-action range): every
+        // refusal is for safety.
         let own = vorrt_colregs::VesselState::new(glam::DVec2::ZERO, 0.0, 6.0, 50.0);
         let goal_m = glam::DVec2::new(0.0, 3000.0);
         let blocker = vorrt_jfs::TargetState::constant_velocity(vorrt_colregs::VesselState::new(
@@ -385,6 +386,8 @@ mod tests {
             ..PlannerConfig::default()
         };
         config.rules.mtd_m = 1.0;
+        // Nor latched early, for a turn made beyond MTD (decision 74).
+        config.rules.early_action_range_m = 1.0;
         let samples_of = |result: Result<crate::Plan, crate::PlannerError>| {
             result
                 .expect_err("blocked")

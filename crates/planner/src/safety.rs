@@ -182,8 +182,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     /// within MTD get), settled turn or new encounter looks at it, and
     /// beyond `d_th` with every margin, so the clearance holds: skipping
     /// it changes no verdict and no encounter, bit for bit (decision 33).
-    /// A target with an encounter in force, or an alteration carried, is
-    /// always in reach.
+    /// Where a turn to starboard may show along the leg, the reach is at
+    /// least the early-action range, within which such a turn latches a
+    /// vessel it is made for (decision 74). A target with an encounter in
+    /// force, or an alteration carried, is always in reach.
     #[must_use]
     pub fn within_reach(
         &self,
@@ -191,6 +193,45 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         start_elapsed_s: f64,
         latches: &[Option<EncounterLatch>],
         alterations: &[f64],
+    ) -> Vec<bool> {
+        // A turn to starboard shown along the leg latches a vessel beyond
+        // MTD it is made for, within the early-action range (decision 74).
+        let rules = &self.config.rules;
+        let before_course_rad = self.course_before(leg, start_elapsed_s);
+        let floor_m = if crate::validity::may_show_starboard_turn(
+            leg,
+            before_course_rad,
+            crate::validity::early_latch_turn_rad(rules),
+        ) {
+            rules.early_action_range_m
+        } else {
+            0.0
+        };
+        self.within_reach_of(leg, start_elapsed_s, (latches, alterations), floor_m)
+    }
+
+    /// The course an observer sees held before `leg`, which starts
+    /// `start_elapsed_s` after the plan's start: on the first leg of a plan
+    /// that starts in a turn, the course held before that turn (the closed
+    /// loop's history); otherwise the leg's own start course (a turn
+    /// between legs begins with the next leg).
+    pub(crate) fn course_before(&self, leg: &vorrt_jfs::Leg, start_elapsed_s: f64) -> f64 {
+        if start_elapsed_s <= 0.0 {
+            self.steady_course_rad
+        } else {
+            leg.start_course_rad
+        }
+    }
+
+    /// The one test behind [`within_reach`](Self::within_reach): a target
+    /// is out of reach when it stays farther than its reach, and than
+    /// `floor_m`.
+    fn within_reach_of(
+        &self,
+        leg: &vorrt_jfs::Leg,
+        start_elapsed_s: f64,
+        (latches, alterations): (&[Option<EncounterLatch>], &[f64]),
+        floor_m: f64,
     ) -> Vec<bool> {
         let span_s = leg.duration_s();
         let own_reach_m = leg.length_m();
@@ -213,7 +254,8 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                 let range_m = leg.start_m.distance(track.position_at(start_elapsed_s));
                 let closing_m = own_reach_m + target_speed_mps * span_s;
                 // A metre to spare for rounding; a NaN keeps the target.
-                let out_of_reach = range_m - closing_m >= self.reach_m(track, margin_m) + 1.0;
+                let out_of_reach =
+                    range_m - closing_m >= self.reach_m(track, margin_m).max(floor_m) + 1.0;
                 !out_of_reach
             })
             .collect()

@@ -29,7 +29,9 @@ use vorrt_colregs::risk::no_risk_while_steady;
 use vorrt_colregs::rules::{
     STEADY_COURSE_WINDOW_S, acting_for_any, alteration_made, steady_course_rad,
 };
-use vorrt_colregs::{EncounterLatch, RuleParameters, VesselState, update_latch_seen_moving};
+use vorrt_colregs::{
+    EncounterLatch, RuleParameters, VesselState, update_latch_judged, update_latch_seen_moving,
+};
 use vorrt_jfs::{Leg, LinearTrack};
 
 pub(crate) mod key;
@@ -239,6 +241,10 @@ impl EncounterState {
             };
             (own_velocity_mps, seen_mps)
         };
+        // Whether a readily apparent turn of ownship to starboard shows: a
+        // vessel beyond MTD it is made for is latched then (decision 74).
+        let turning_to_starboard =
+            shows_early_latch_turn(steady_course_rad, own_then.course_rad, rules);
         // Whether the memo may be kept at this piece (decision 54).
         let steady = along
             .as_mut()
@@ -262,16 +268,29 @@ impl EncounterState {
                 *altered = alteration_made(None, None, *altered, own_then.course_rad, false);
                 continue;
             }
-            if before.is_none()
-                && !vorrt_colregs::rules::within_mtd(
-                    own_then.position_m.distance(position_then(index)),
-                    rules,
-                )
-            {
-                // No encounter, and none begins beyond MTD (the latch's
-                // first test, on the same range): the state is not needed.
-                *altered = alteration_made(None, None, *altered, own_then.course_rad, false);
-                continue;
+            if before.is_none() {
+                let range_m = own_then.position_m.distance(position_then(index));
+                if !vorrt_colregs::rules::within_mtd(range_m, rules) {
+                    // Beyond MTD an encounter begins only as the judges
+                    // latch one: for a vessel ownship's turn to starboard
+                    // is made for, within the early-action range (decision
+                    // 74). Otherwise none begins (the latch's first test,
+                    // on the same range): the state is not needed.
+                    *latch = (turning_to_starboard && range_m < rules.early_action_range_m)
+                        .then(|| state_then(index))
+                        .and_then(|target| {
+                            update_latch_judged(
+                                None,
+                                own_then,
+                                steady_course_rad,
+                                &target,
+                                time_s,
+                                rules,
+                            )
+                        });
+                    *altered = alteration_made(None, *latch, *altered, own_then.course_rad, false);
+                    continue;
+                }
             }
             let target = state_then(index);
             let target_mps = along.as_mut().map_or_else(
@@ -335,6 +354,46 @@ fn steady_through_turn(times_s: [f64; 4], courses_rad: [f64; 3]) -> f64 {
         STEADY_COURSE_WINDOW_S,
     )
     .unwrap_or(now_rad)
+}
+
+/// The turn to starboard of the course an observer sees held at which the
+/// planner latches a vessel beyond MTD that the turn is made for
+/// ([`update_latch_judged`]; decision 74): a readily apparent alteration
+/// ([`RuleParameters::apparent_turn_rad`]). The judges latch her at any
+/// turn they can see; the planner holds only an alteration an observer
+/// reads as action (rule 8(b)) until she is past. A drift of a few degrees
+/// that a stand-on vessel may make (decision 46) latches nothing, and an
+/// alteration of 35° latches her part way round, from the same held course.
+#[must_use]
+pub(crate) fn early_latch_turn_rad(rules: &RuleParameters) -> f64 {
+    rules.apparent_turn_rad.max(rules.turn_tolerance_rad)
+}
+
+/// Whether ownship on `course_rad`, seen to have held `steady_course_rad`,
+/// shows the turn to starboard at which the planner latches a vessel
+/// beyond MTD ([`early_latch_turn_rad`]).
+fn shows_early_latch_turn(steady_course_rad: f64, course_rad: f64, rules: &RuleParameters) -> bool {
+    vorrt_colregs::rules::course_change_rad(steady_course_rad, course_rad)
+        >= early_latch_turn_rad(rules)
+}
+
+/// Whether a turn to starboard of at least `threshold_rad` may show along
+/// `leg` (the steady course an observer sees at a piece is the course
+/// before the leg, `before_course_rad`, or its start course, while the
+/// turn is in view; the courses passed through lie between its start and
+/// its settled course): a vessel beyond MTD may then be latched early
+/// (decision 74).
+pub(crate) fn may_show_starboard_turn(
+    leg: &Leg,
+    before_course_rad: f64,
+    threshold_rad: f64,
+) -> bool {
+    let to_starboard = |from_rad: f64, to_rad: f64| {
+        vorrt_colregs::rules::course_change_rad(from_rad, to_rad) >= threshold_rad
+    };
+    to_starboard(before_course_rad, leg.course_rad)
+        || to_starboard(leg.start_course_rad, leg.course_rad)
+        || to_starboard(before_course_rad, leg.start_course_rad)
 }
 
 /// Whether [`SafetyChecker::within_reach`] is worth working out for `leg`:
@@ -424,19 +483,11 @@ impl<C: Constraint> SafetyChecker<'_, C> {
     ) -> Result<(), RejectionCause> {
         // The targets that may come within reach of this leg, worked out
         // once: the others can change no verdict (decision 33).
+        let before_s = start_elapsed_s - 1e-3;
+        let before_course_rad = self.course_before(leg, start_elapsed_s);
         let in_reach = worth_pruning(self, leg)
             .then(|| self.within_reach(leg, start_elapsed_s, &state.latches, &state.alterations));
         let checker = self.only_within(in_reach.as_deref().unwrap_or(&[]));
-        // Before the leg: on the first leg of a plan that starts in a turn,
-        // the course held before that turn (the closed loop's history);
-        // otherwise the leg's own start course (a turn between legs begins
-        // with the next leg).
-        let before_s = start_elapsed_s - 1e-3;
-        let before_course_rad = if start_elapsed_s <= 0.0 {
-            self.steady_course_rad()
-        } else {
-            leg.start_course_rad
-        };
         // The courses a port turn of this leg is judged from, and on which
         // pieces (decisions 28, 57, 69).
         let port_turns = PortTurns::new(

@@ -66,6 +66,22 @@ fn near_and_latched_targets_are_in_reach_and_far_ones_are_not() {
         checker.within_reach(&long, 0.0, &none, &zeros),
         [true, false, false, true]
     );
+    // A leg that turns to starboard may latch a vessel it is made for
+    // within the early-action range (decision 74): the last one is kept.
+    let starboard = Leg::turning_onto(
+        Pose {
+            position_m: DVec2::ZERO,
+            course_rad: 0.0,
+        },
+        35f64.to_radians(),
+        500.0,
+        6.0,
+        1_000.0,
+    );
+    assert_eq!(
+        checker.within_reach(&starboard, 0.0, &none, &zeros),
+        [true, false, false, true]
+    );
     // The reach: MTD, which is wider than d_th (200 m) plus half the two
     // lengths (100 m) plus the margin.
     assert!((checker.reach_m(&tracks[0], 50.0) - config.rules.mtd_m).abs() < 1e-9);
@@ -168,9 +184,19 @@ proptest! {
             for piece in leg.pieces(config.step_m) {
                 let from_s = start_elapsed_s + piece.elapsed_s;
                 let to_s = from_s + piece.duration_s;
+                // Beyond the early-action range, where the leg turns to
+                // starboard and a vessel it is made for may be latched
+                // early (decision 74).
+                let turns_to_starboard = vorrt_geometry::angle::normalize_pi(leg.course_rad)
+                    >= config.rules.apparent_turn_rad;
+                let floor_m = if turns_to_starboard {
+                    config.rules.early_action_range_m
+                } else {
+                    config.rules.mtd_m
+                };
                 for (own_m, at_s) in [(piece.start_m, from_s), (piece.end_m(), to_s)] {
                     let range_m = own_m.distance(track.position_at(at_s));
-                    prop_assert!(range_m >= config.rules.mtd_m, "{range_m}");
+                    prop_assert!(range_m >= floor_m, "{range_m}");
                 }
                 let during_m = min_distance_over(piece.start_m, piece.velocity_mps, track, from_s, piece.duration_s);
                 prop_assert!(

@@ -43,7 +43,8 @@ fn head_on(name: &str, (east_m, north_m): (f64, f64), course_deg: f64, speed_kn:
 
 /// Whether the target is on ownship's port side at the closest approach (as
 /// ownship then heads), the distance then, and the largest turn to port of
-/// ownship's first course before it, degrees.
+/// ownship's first course before the two have passed (or the closest
+/// approach, if sooner), degrees.
 fn passing(scenario: &Scenario) -> (bool, f64, f64) {
     let record = simulate(scenario, 1).expect("valid settings");
     let evaluation = evaluate(scenario, &record);
@@ -62,8 +63,23 @@ fn passing(scenario: &Scenario) -> (bool, f64, f64) {
         own.course_rad,
         record.targets[0][closest].position_m,
     );
+    // Before the two have passed (`has_passed`, decision 44): since
+    // decision 74 the alteration is held until then, and the return to the
+    // goal that follows may come round to port of the first course with
+    // the target abaft the beam, which moves the closest approach a little
+    // later.
+    let rules = scenario.planner_config().expect("valid").rules;
+    let passed = record
+        .ownship
+        .iter()
+        .zip(&record.targets[0])
+        .position(|(own, target)| {
+            vorrt_colregs::has_passed(own, target, vorrt_colregs::Encounter::HeadOn, &rules)
+        })
+        .unwrap_or(closest)
+        .min(closest);
     let first_rad = record.ownship[0].course_rad;
-    let most_to_port_deg = record.ownship[..closest]
+    let most_to_port_deg = record.ownship[..passed]
         .iter()
         .map(|own| -vorrt_geometry::angle::normalize_pi(own.course_rad - first_rad).to_degrees())
         .fold(0.0, f64::max);

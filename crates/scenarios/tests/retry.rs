@@ -7,6 +7,7 @@
 //! same manoeuvre to within a few seconds (run 111: 35 plans, 11 % path
 //! overhead). A fallback plan is now judged by its own level's check, and a
 //! retry replaces it only with a stricter plan or a clearly sooner one.
+//! Since decision 74 runs 111 and 948 keep every rule from their first plan.
 
 use vorrt_planner::Compliance;
 use vorrt_scenarios::simulation::PAST_AND_CLEAR_GAIN_S;
@@ -74,11 +75,10 @@ fn retries_only_for_better_plans(record: &SimulationRecord, run: u64) -> usize {
 
 #[test]
 fn a_retry_keeps_the_fallback_plan_in_force_unless_a_better_one_is_found() {
-    let runs = [
-        (111, 4_654_229_725_192_512_665, 3),
-        (636, 283_519_718_206_295_765, 3),
-        (948, 13_243_016_833_840_574_873, 3),
-    ];
+    // Runs 111 and 948 no longer sail a fallback plan: since decision 74
+    // the first plan holds its alteration for the vessel met beyond MTD,
+    // and keeps every rule (`first_plans_keep_every_rule_since_decision_74`).
+    let runs = [(636, 283_519_718_206_295_765, 3)];
     for (index, seed, most_plans) in runs {
         let spec = OpenSeaSpec::with_targets(2).with_behaviour(TargetBehaviour::Constant);
         let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
@@ -104,6 +104,29 @@ fn a_retry_keeps_the_fallback_plan_in_force_unless_a_better_one_is_found() {
         assert!(
             evaluation.reached_goal && evaluation.clearance_kept && !evaluation.collision,
             "run {index}"
+        );
+    }
+}
+
+/// Runs 111 and 948 sailed a `safety_only` plan for minutes and retried
+/// (decision 64); since decision 74 their first plan keeps every rule and
+/// is the only one.
+#[test]
+fn first_plans_keep_every_rule_since_decision_74() {
+    for (index, seed) in [
+        (111, 4_654_229_725_192_512_665),
+        (948, 13_243_016_833_840_574_873),
+    ] {
+        let spec = OpenSeaSpec::with_targets(2).with_behaviour(TargetBehaviour::Constant);
+        let scenario = vorrt_scenarios::generator::open_sea(&spec, 11, index).expect("generated");
+        let record = simulate(&scenario, seed).expect("valid settings");
+        assert_eq!(record.plans.len(), 1, "run {index}");
+        assert_eq!(record.plans[0].compliance, Compliance::Full, "run {index}");
+        let evaluation = evaluate(&scenario, &record);
+        assert!(
+            evaluation.reached_goal && evaluation.clearance_kept && evaluation.compliant,
+            "run {index}: {:?}",
+            evaluation.targets
         );
     }
 }

@@ -3,7 +3,7 @@
 use super::*;
 use crate::PlannerConfig;
 use vorrt_geometry::angle;
-use vorrt_jfs::TargetState;
+use vorrt_jfs::{MotionModel, TargetState};
 
 /// The settled-turn predicate's velocities and gate kept in a leg's memo
 /// are those worked out afresh, bit for bit, whichever of the course
@@ -148,5 +148,54 @@ fn no_port_turn_is_toward_a_vessel_beyond_mtd() {
     assert!(
         within > 0 && refused_within > 0,
         "{refused_within} of {within}"
+    );
+}
+
+/// A vessel met head-on 8 nm off, beyond MTD: a leg that turns 35° to
+/// starboard latches her as the judges do (decision 74), on the course held
+/// before the turn, and a leg back toward her course while she is still
+/// closing is refused as an alteration not held; a leg held on the course
+/// latches nothing.
+#[test]
+fn a_turn_to_starboard_latches_a_vessel_beyond_mtd_it_is_made_for() {
+    let config = PlannerConfig::default();
+    let own = VesselState::new(DVec2::ZERO, 0.0, 6.0, 100.0);
+    let range_m = 8.0 * 1852.0;
+    assert!(range_m > config.rules.mtd_m && range_m < config.rules.early_action_range_m);
+    let tracks = [TargetState::constant_velocity(VesselState::new(
+        DVec2::new(0.0, range_m),
+        std::f64::consts::PI,
+        6.0,
+        100.0,
+    ))
+    .track()];
+    let checker = SafetyChecker::new(&config, &tracks, own, DVec2::new(0.0, 40_000.0), 0.0);
+    let model = vorrt_jfs::RateLimitedTurn {
+        turn_radius_m: 700.0,
+    };
+    let start = vorrt_jfs::Pose {
+        position_m: DVec2::ZERO,
+        course_rad: 0.0,
+    };
+    // Held on: nothing latched beyond MTD.
+    let mut state = EncounterState::new(vec![None], vec![0.0]);
+    let north = Leg::straight(DVec2::ZERO, 0.0, 1000.0, 6.0);
+    checker.validate(&north, 0.0, &mut state).unwrap();
+    assert_eq!(state.latches, [None]);
+    // Turned 35° to starboard: latched head-on, from the course held.
+    let mut state = EncounterState::new(vec![None], vec![0.0]);
+    let turn = model.turn_onto(start, 35f64.to_radians(), 6.0, 1000.0);
+    checker.validate(&turn, 0.0, &mut state).unwrap();
+    let latch = state.latches[0].expect("latched early");
+    assert_eq!(latch.encounter, vorrt_colregs::Encounter::HeadOn);
+    assert!(angle::normalize_pi(latch.reference_course_rad).abs() < 1e-9);
+    assert!(state.alterations[0] > config.rules.apparent_turn_rad);
+    // Back to 10° while she closes: not held.
+    let back = model.turn_onto(turn.end_pose(), 10f64.to_radians(), 6.0, 1000.0);
+    assert_eq!(
+        checker.validate(&back, turn.duration_s(), &mut state.clone()),
+        Err(RejectionCause::Colregs(
+            vorrt_colregs::ManeuverViolation::AlterationNotHeld
+        ))
     );
 }
