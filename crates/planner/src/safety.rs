@@ -224,8 +224,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
     }
 
     /// The one test behind [`within_reach`](Self::within_reach): a target
-    /// is out of reach when it stays farther than its reach, and than
-    /// `floor_m`.
+    /// is out of reach when it stays farther than its reach over the leg,
+    /// and farther than `floor_m` while the leg's turn is in view (an early
+    /// latch needs the turn to show: up to the turn's end plus the
+    /// observation window, and the piece that ends past it).
     fn within_reach_of(
         &self,
         leg: &vorrt_jfs::Leg,
@@ -236,6 +238,15 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
         let span_s = leg.duration_s();
         let own_reach_m = leg.length_m();
         let margin_m = leg.piece_error_m() + leg.timing_error_m();
+        // While the turn shows: a piece more than the window past its end
+        // (a piece lasts at most `step_m` at the lower of the two speeds).
+        let own_top_mps = leg.start_speed_mps().max(leg.speed_mps);
+        let own_low_mps = leg.start_speed_mps().min(leg.end_speed_mps());
+        let piece_s = self.config.step_m / own_low_mps;
+        let shown_s =
+            (leg.turn_duration_s() + vorrt_colregs::rules::STEADY_COURSE_WINDOW_S + piece_s)
+                .min(span_s);
+        let own_shown_m = own_reach_m.min(own_top_mps * shown_s);
         self.tracks
             .iter()
             .enumerate()
@@ -253,9 +264,10 @@ impl<'a, C: Constraint> SafetyChecker<'a, C> {
                     .max(track.then_velocity_mps.length());
                 let range_m = leg.start_m.distance(track.position_at(start_elapsed_s));
                 let closing_m = own_reach_m + target_speed_mps * span_s;
+                let shown_closing_m = own_shown_m + target_speed_mps * shown_s;
                 // A metre to spare for rounding; a NaN keeps the target.
-                let out_of_reach =
-                    range_m - closing_m >= self.reach_m(track, margin_m).max(floor_m) + 1.0;
+                let out_of_reach = range_m - closing_m >= self.reach_m(track, margin_m) + 1.0
+                    && range_m - shown_closing_m >= floor_m + 1.0;
                 !out_of_reach
             })
             .collect()

@@ -184,12 +184,15 @@ proptest! {
             for piece in leg.pieces(config.step_m) {
                 let from_s = start_elapsed_s + piece.elapsed_s;
                 let to_s = from_s + piece.duration_s;
-                // Beyond the early-action range, where the leg turns to
-                // starboard and a vessel it is made for may be latched
-                // early (decision 74).
+                // Beyond the early-action range where the leg turns to
+                // starboard and the turn still shows (up to the window
+                // past its end), as a vessel it is made for may be latched
+                // early then (decision 74).
                 let turns_to_starboard = vorrt_geometry::angle::normalize_pi(leg.course_rad)
                     >= config.rules.apparent_turn_rad;
-                let floor_m = if turns_to_starboard {
+                let shows = piece.elapsed_s + piece.duration_s
+                    <= leg.turn_duration_s() + vorrt_colregs::rules::STEADY_COURSE_WINDOW_S;
+                let floor_m = if turns_to_starboard && shows {
                     config.rules.early_action_range_m
                 } else {
                     config.rules.mtd_m
