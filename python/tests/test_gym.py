@@ -68,10 +68,10 @@ def test_reward_terms_are_the_weights():
 def test_the_planner_policy_beats_random_and_the_end_is_judged():
     env = vgym.VorrtEnv(generator={"kind": "open-sea", "targets": 2})
     env.action_space.seed(0)
-    # Seeds 1 and 2: the episode of seed 0 has one finding since decision 73
-    # (an alteration made beyond MTD eased back before the vessel is past,
-    # which the planner does not yet forbid there).
-    planner = [vgym.episode(env, vgym.PlannerPolicy(env), seed) for seed in (1, 2)]
+    # Seed 0's episode had a finding under decision 73 (an alteration made
+    # beyond MTD eased back before the vessel was past); since decision 74
+    # the planner holds it.
+    planner = [vgym.episode(env, vgym.PlannerPolicy(env), seed) for seed in range(3)]
     random = [vgym.episode(env, lambda o: env.action_space.sample(), seed) for seed in range(2)]
     assert all(run["reached_goal"] and run["findings"] == 0 for run in planner)
     assert sum(r["return"] for r in planner) > sum(r["return"] for r in random)
