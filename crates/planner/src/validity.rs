@@ -365,7 +365,7 @@ fn steady_through_turn(times_s: [f64; 4], courses_rad: [f64; 3]) -> f64 {
 /// that a stand-on vessel may make (decision 46) latches nothing, and an
 /// alteration of 35° latches her part way round, from the same held course.
 #[must_use]
-pub(crate) fn early_latch_turn_rad(rules: &RuleParameters) -> f64 {
+fn early_latch_turn_rad(rules: &RuleParameters) -> f64 {
     rules.apparent_turn_rad.max(rules.turn_tolerance_rad)
 }
 
@@ -377,23 +377,20 @@ fn shows_early_latch_turn(steady_course_rad: f64, course_rad: f64, rules: &RuleP
         >= early_latch_turn_rad(rules)
 }
 
-/// Whether a turn to starboard of at least `threshold_rad` may show along
-/// `leg` (the steady course an observer sees at a piece is the course
-/// before the leg, `before_course_rad`, or its start course, while the
-/// turn is in view; the courses passed through lie between its start and
-/// its settled course): a vessel beyond MTD may then be latched early
-/// (decision 74).
+/// Whether the turn at which the planner latches a vessel beyond MTD
+/// ([`shows_early_latch_turn`]) may show along `leg` (the steady course an
+/// observer sees at a piece is the course before the leg,
+/// `before_course_rad`, or its start course, while the turn is in view;
+/// the courses passed through lie between its start and its settled
+/// course; decision 74).
 pub(crate) fn may_show_starboard_turn(
     leg: &Leg,
     before_course_rad: f64,
-    threshold_rad: f64,
+    rules: &RuleParameters,
 ) -> bool {
-    let to_starboard = |from_rad: f64, to_rad: f64| {
-        vorrt_colregs::rules::course_change_rad(from_rad, to_rad) >= threshold_rad
-    };
-    to_starboard(before_course_rad, leg.course_rad)
-        || to_starboard(leg.start_course_rad, leg.course_rad)
-        || to_starboard(before_course_rad, leg.start_course_rad)
+    shows_early_latch_turn(before_course_rad, leg.course_rad, rules)
+        || shows_early_latch_turn(leg.start_course_rad, leg.course_rad, rules)
+        || shows_early_latch_turn(before_course_rad, leg.start_course_rad, rules)
 }
 
 /// Whether [`SafetyChecker::within_reach`] is worth working out for `leg`:
