@@ -239,7 +239,7 @@ impl Measurements {
             small_alterations,
             eased_back: eased_back(before_cpa, latch, parameters, scoring),
             crossed_ahead_distance_m: crossing_ahead_distance(samples, window, parameters, scoring),
-            action_required: action_required(latch_sample, scoring),
+            action_required: action_required(latch_sample, latch, scoring),
         }
     }
 }
@@ -531,17 +531,31 @@ pub(super) fn crossing_ahead_distance(
 }
 
 /// Whether a give-way action was required (rule 16, "to keep well clear"):
-/// the pass predicted at the first in-force sample, both vessels holding
-/// their velocities, would not keep the clearance `d_th` between the hulls
+/// the pass predicted at the first in-force sample, the target holding its
+/// velocity and ownship the course and speed the encounter was latched on
+/// (`latch`'s reference: the course held before any turn under way, on
+/// which risk arose), would not keep the clearance `d_th` between the hulls
 /// ([`keeps_clearance`]). A pass predicted to keep it is already clear, and
 /// no alteration is demanded of it (decision 42; issue 23: a set-up
-/// port-to-port pass at 0.8 nm, an overtaking 0.2 nm off). With no in-force
+/// port-to-port pass at 0.8 nm, an overtaking 0.2 nm off). Predicted on the
+/// course steered at that sample instead, an alteration begun before the
+/// latch (an early one, decision 73) made its own encounter look clear and
+/// owe nothing, not even to be held (decision 75). With no in-force
 /// sample, nothing was required.
-fn action_required(latch_sample: Option<&EncounterSample>, scoring: &ScoringParameters) -> bool {
+fn action_required(
+    latch_sample: Option<&EncounterSample>,
+    latch: &EncounterLatch,
+    scoring: &ScoringParameters,
+) -> bool {
     latch_sample.is_some_and(|s| {
+        let held = VesselState {
+            course_rad: latch.reference_course_rad,
+            speed_mps: latch.reference_speed_mps,
+            ..s.own
+        };
         let cpa_m = closest_point_of_approach(
             s.own.position_m,
-            s.own.velocity_mps(),
+            held.velocity_mps(),
             s.target.position_m,
             s.target.velocity_mps(),
         )

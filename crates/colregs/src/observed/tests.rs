@@ -542,3 +542,23 @@ proptest! {
         prop_assert!(from_cog.max_turn_rate_deg_s >= 0.5 * rate_deg_s * (1.0 - 1e-6));
     }
 }
+
+/// The pattern of trafficgen run 185 before decision 74: ownship alters
+/// 35° to starboard at once, 8.6 nm off a vessel met head-on, then at
+/// 400 s, still closing, eases back to 10°. Latched early (decision 73)
+/// part way round the turn, the pass predicted on the course then steered
+/// looked clear and no action was owed, not even to be held; predicted on
+/// the course held, the alteration was owed and not held (decision 75).
+#[test]
+fn an_early_alteration_eased_back_while_closing_is_not_held() {
+    let judgement =
+        head_on_from_beyond_mtd(|time_s, _, _| if time_s < 400.0 { 35.0 } else { 10.0 });
+    let latch = judgement.targets[0].latch.expect("early action latches");
+    assert_eq!(latch.encounter, Encounter::HeadOn);
+    assert!(latch.reference_course_rad.abs() < 1e-9);
+    assert!(
+        findings(&judgement).contains(&"alteration_not_held"),
+        "{:?}",
+        findings(&judgement)
+    );
+}
