@@ -2,7 +2,8 @@
 //! ([`SafetyChecker::reach_m`]) and the targets that may come within it
 //! while ownship sails the leg ([`SafetyChecker::within_reach`], decision
 //! 33; the early-action range while a turn to starboard shows, decision
-//! 74).
+//! 74), and the course held before a leg that both the pruning and the
+//! leg's check start from.
 
 use super::SafetyChecker;
 use crate::constraint::Constraint;
@@ -49,8 +50,6 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         latches: &[Option<EncounterLatch>],
         alterations: &[f64],
     ) -> Vec<bool> {
-        // A turn to starboard shown along the leg latches a vessel beyond
-        // MTD it is made for, within the early-action range (decision 74).
         let rules = &self.config.rules;
         let before_course_rad = self.course_before(leg, start_elapsed_s);
         let floor_m = if crate::validity::may_show_starboard_turn(leg, before_course_rad, rules) {
@@ -58,34 +57,10 @@ impl<C: Constraint> SafetyChecker<'_, C> {
         } else {
             0.0
         };
-        self.within_reach_of(leg, start_elapsed_s, (latches, alterations), floor_m)
-    }
-
-    /// The course an observer sees held before `leg`, which starts
-    /// `start_elapsed_s` after the plan's start: on the first leg of a plan
-    /// that starts in a turn, the course held before that turn (the closed
-    /// loop's history); otherwise the leg's own start course (a turn
-    /// between legs begins with the next leg).
-    pub(crate) fn course_before(&self, leg: &vorrt_jfs::Leg, start_elapsed_s: f64) -> f64 {
-        if start_elapsed_s <= 0.0 {
-            self.steady_course_rad
-        } else {
-            leg.start_course_rad
-        }
-    }
-
-    /// The one test behind [`within_reach`](Self::within_reach): a target
-    /// is out of reach when it stays farther than its reach over the leg,
-    /// and farther than `floor_m` while the leg's turn is in view (an early
-    /// latch needs the turn to show: up to the turn's end plus the
-    /// observation window, and the piece that ends past it).
-    fn within_reach_of(
-        &self,
-        leg: &vorrt_jfs::Leg,
-        start_elapsed_s: f64,
-        (latches, alterations): (&[Option<EncounterLatch>], &[f64]),
-        floor_m: f64,
-    ) -> Vec<bool> {
+        // Out of reach: farther than its reach over the leg, and farther
+        // than `floor_m` while the leg's turn is in view (an early latch
+        // needs the turn to show: up to the turn's end plus the
+        // observation window, and the piece that ends past it).
         let span_s = leg.duration_s();
         let own_reach_m = leg.length_m();
         let margin_m = leg.piece_error_m() + leg.timing_error_m();
@@ -122,5 +97,18 @@ impl<C: Constraint> SafetyChecker<'_, C> {
                 !out_of_reach
             })
             .collect()
+    }
+
+    /// The course an observer sees held before `leg`, which starts
+    /// `start_elapsed_s` after the plan's start: on the first leg of a plan
+    /// that starts in a turn, the course held before that turn (the closed
+    /// loop's history); otherwise the leg's own start course (a turn
+    /// between legs begins with the next leg).
+    pub(crate) fn course_before(&self, leg: &vorrt_jfs::Leg, start_elapsed_s: f64) -> f64 {
+        if start_elapsed_s <= 0.0 {
+            self.steady_course_rad
+        } else {
+            leg.start_course_rad
+        }
     }
 }
