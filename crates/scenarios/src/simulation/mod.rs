@@ -26,7 +26,9 @@
 //! then that plan is held as the manoeuvre under way
 //! (`vorrt_planner::holds_manoeuvre_in_force`, decision 56). While ownship sails a fallback plan or
 //! the evasive manoeuvre it tries again for a fully compliant plan after
-//! [`RETRY_AFTER_S`], or at once when the encounters in force change; a
+//! [`RETRY_AFTER_S`] (doubled after each retry in a row that keeps the plan
+//! in force, up to [`RETRY_DOUBLINGS`] times: decision 76), or at once when
+//! the encounters in force change; a
 //! retry grows the planner's trees in the first, goal-biased phase only
 //! (`vorrt_planner::SearchEffort::FirstPhase`), since it is one draw of many,
 //! except at the last level (safety only), which always searches in full.
@@ -60,7 +62,7 @@ pub use closed_loop::{
 pub use commanded::{COMMANDED_GOAL_TOLERANCE_M, CommandError, CommandedRun};
 pub use planning::{
     EVASION_COURSES, EVASION_HORIZON_S, LATE_ARRIVAL_ASK_S, PAST_AND_CLEAR_GAIN_S,
-    REFERENCE_MATCH_RAD, RETRY_AFTER_S, RETURN_MOVED_S,
+    REFERENCE_MATCH_RAD, RETRY_AFTER_S, RETRY_DOUBLINGS, RETURN_MOVED_S,
 };
 pub use record::{PlanCheck, PlanEvent, PlanTrigger, SimulationRecord, call_seed};
 pub use recorded::{RecordedMotion, RecordedMotionError, TimedState};

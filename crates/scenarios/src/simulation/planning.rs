@@ -19,8 +19,19 @@ pub const REFERENCE_MATCH_RAD: f64 = 4.0 * std::f64::consts::PI / 180.0;
 
 /// After a failed plan (or a fallback plan), seconds until ownship tries
 /// again for a plan that keeps every rule, unless the encounters in force
-/// change first.
+/// change first. The wait doubles after each retry in a row that keeps the
+/// plan in force ([`RETRY_DOUBLINGS`], decision 76).
 pub const RETRY_AFTER_S: f64 = 20.0;
+
+/// How many times the wait between retries ([`RETRY_AFTER_S`]) doubles
+/// while retry after retry keeps the plan in force, so that it grows to at
+/// most 160 s (decision 76). A retry that finds nothing better is a search
+/// of every stricter level spent for nothing; in dense traffic one fell due
+/// at almost every fourth step, and retries were half the planning time of
+/// a run with 100 targets. The wait starts again from [`RETRY_AFTER_S`]
+/// whenever a plan is put in force, and a change of the encounters in
+/// force still asks at once.
+pub const RETRY_DOUBLINGS: u32 = 3;
 
 /// A target's predicted return to its route that moves by more than this
 /// from the one the plan in force assumed asks whether that plan still
@@ -51,13 +62,16 @@ pub const EVASION_COURSES: usize = 72;
 
 /// When ownship, sailing a fallback plan (or the evasive manoeuvre), next
 /// tries for a plan that keeps every rule: [`RETRY_AFTER_S`] after the last
-/// failure, or at once when the encounters in force change (one released, a
-/// new one latched, or a reference course changed), since the situation the
-/// failure was judged in is then gone.
+/// failure, doubled after each retry in a row that kept the plan in force
+/// (up to [`RETRY_DOUBLINGS`] times), or at once when the encounters in
+/// force change (one released, a new one latched, or a reference course
+/// changed), since the situation the failure was judged in is then gone.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct RetryTimer {
     /// When the next retry is due, seconds (infinite: none pending).
     at_s: f64,
+    /// Retries in a row that found no plan keeping more rules.
+    kept_in_a_row: u32,
     /// The encounters in force at the last failure.
     situation: Vec<Option<EncounterLatch>>,
 }
@@ -67,6 +81,7 @@ impl RetryTimer {
     pub(super) fn idle() -> Self {
         Self {
             at_s: f64::INFINITY,
+            kept_in_a_row: 0,
             situation: Vec::new(),
         }
     }
@@ -77,9 +92,24 @@ impl RetryTimer {
     }
 
     /// The search for a fully compliant plan failed at `time_s` with
-    /// `encounters` in force.
+    /// `encounters` in force (or a fallback plan was put in force then):
+    /// the wait starts from [`RETRY_AFTER_S`].
     fn failed(&mut self, time_s: f64, encounters: &[Option<EncounterLatch>]) {
-        self.at_s = time_s + RETRY_AFTER_S;
+        self.kept_in_a_row = 0;
+        self.wait_from(time_s, encounters);
+    }
+
+    /// A retry at `time_s` with `encounters` in force found no plan to put
+    /// in force instead of the one in force: the wait doubles
+    /// ([`RETRY_DOUBLINGS`]).
+    pub(super) fn kept(&mut self, time_s: f64, encounters: &[Option<EncounterLatch>]) {
+        self.kept_in_a_row = self.kept_in_a_row.saturating_add(1);
+        self.wait_from(time_s, encounters);
+    }
+
+    fn wait_from(&mut self, time_s: f64, encounters: &[Option<EncounterLatch>]) {
+        let doublings = self.kept_in_a_row.min(RETRY_DOUBLINGS);
+        self.at_s = time_s + RETRY_AFTER_S * f64::from(1_u32 << doublings);
         self.situation.clear();
         self.situation.extend_from_slice(encounters);
     }

@@ -50,7 +50,7 @@ pub(in crate::simulation) fn retry_in_force<C: Constraint>(
             Some(Asked::Planned)
         }
         _ => {
-            retry.failed(problem.start_time_s, &problem.encounters);
+            retry.kept(problem.start_time_s, &problem.encounters);
             Some(Asked::Kept {
                 search_time_s: started.elapsed().as_secs_f64(),
             })

@@ -46,6 +46,29 @@ fn a_retry_is_due_after_the_wait_or_when_the_encounters_change() {
 }
 
 #[test]
+fn the_wait_doubles_while_retries_keep_the_plan_in_force_and_starts_again_after_a_plan() {
+    let mut retry = RetryTimer::idle();
+    let situation = vec![Some(latch(Encounter::HeadOn)), None];
+    retry.failed(0.0, &situation);
+    assert!(retry.due(RETRY_AFTER_S, &situation));
+    // Retry after retry finds nothing better: 40, 80, 160 s, then no longer.
+    let mut time_s = RETRY_AFTER_S;
+    for doublings in 1..=RETRY_DOUBLINGS + 2 {
+        retry.kept(time_s, &situation);
+        let wait_s = RETRY_AFTER_S * f64::from(1_u32 << doublings.min(RETRY_DOUBLINGS));
+        assert!(!retry.due(time_s + wait_s - 5.0, &situation), "{doublings}");
+        assert!(retry.due(time_s + wait_s, &situation), "{doublings}");
+        time_s += wait_s;
+    }
+    assert!((RETRY_AFTER_S * f64::from(1_u32 << RETRY_DOUBLINGS) - 160.0).abs() < 1e-9);
+    // A change of the encounters in force still asks at once.
+    assert!(retry.due(time_s + 5.0, &[None, None]));
+    // A plan put in force (a fallback found anew): the wait starts again.
+    retry.failed(time_s, &situation);
+    assert!(retry.due(time_s + RETRY_AFTER_S, &situation));
+}
+
+#[test]
 fn a_fallback_level_that_would_repeat_the_failed_search_is_not_asked() {
     use glam::DVec2;
     use vorrt_planner::PlannerConfig;
