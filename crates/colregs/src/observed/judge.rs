@@ -3,7 +3,7 @@
 //! and assessed on the observed states.
 
 use super::noise::{TrackNoise, position_noise_m, track_noise, typical_speed_mps};
-use super::observe::{OverGround, over_ground_from};
+use super::observe::{OverGround, over_ground_from, speeds_over_ground_from};
 use super::quality::{PathQuality, path_quality};
 use super::status::NavigationalStatus;
 use super::undecided::{
@@ -219,10 +219,12 @@ fn noise_of(times_s: &[f64], track: &RecordedTrack, parameters: &ObservedParamet
     // Speeds over the longest window: over a short one, jitter adds speed
     // to a slow vessel and so would lower its course jitter.
     let longest_s = parameters.noise.max_window_s.max(parameters.window_s);
-    let speeds: Vec<f64> = observe(times_s, track, longest_s, false)
-        .iter()
-        .map(|over| over.speed_mps)
-        .collect();
+    let speeds = speeds_over_ground_from(
+        times_s,
+        &track.positions_m,
+        longest_s,
+        before_start_mps(times_s, track, longest_s, false),
+    );
     track_noise(
         jitter_m,
         typical_speed_mps(&speeds),
@@ -256,8 +258,20 @@ fn observe(
     window_s: f64,
     jittery: bool,
 ) -> Vec<OverGround> {
+    let before_start_mps = before_start_mps(times_s, track, window_s, jittery);
+    over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
+}
+
+/// The velocity a track is taken to have held before its start
+/// ([`observe`]).
+fn before_start_mps(
+    times_s: &[f64],
+    track: &RecordedTrack,
+    window_s: f64,
+    jittery: bool,
+) -> Option<vorrt_geometry::DVec2> {
     let first_window = first_window_velocity_mps(times_s, &track.positions_m, window_s);
-    let before_start_mps = match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
+    match (&track.courses_rad, times_s, track.positions_m.as_slice()) {
         (Some(courses), [t0, t1, ..], [p0, p1, ..]) => courses.first().map(|course| {
             let speed_mps = match first_window {
                 Some(velocity) if jittery => velocity.length(),
@@ -266,8 +280,7 @@ fn observe(
             vorrt_geometry::angle::velocity(*course, speed_mps)
         }),
         _ => first_window,
-    };
-    over_ground_from(times_s, &track.positions_m, window_s, before_start_mps)
+    }
 }
 
 /// The mean velocity over the first `window_s` of a track (or all of it,

@@ -71,17 +71,75 @@ pub fn over_ground_from(
     window_s: f64,
     before_start_mps: Option<DVec2>,
 ) -> Vec<OverGround> {
+    let mut observed = Vec::with_capacity(times_s.len().min(positions_m.len()));
+    let mut last_course = 0.0;
+    for_each_window(
+        times_s,
+        positions_m,
+        (window_s, before_start_mps),
+        |displacement, elapsed_s| {
+            let (course_rad, speed_mps) = if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
+                (last_course, 0.0)
+            } else {
+                (
+                    angle::unit_to_course(displacement),
+                    displacement.length() / elapsed_s,
+                )
+            };
+            last_course = course_rad;
+            observed.push(OverGround {
+                course_rad,
+                speed_mps,
+            });
+        },
+    );
+    observed
+}
+
+/// The speeds over ground of [`over_ground_from`] alone, m/s (the same
+/// values, without working out the courses).
+pub(super) fn speeds_over_ground_from(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    window_s: f64,
+    before_start_mps: Option<DVec2>,
+) -> Vec<f64> {
+    let mut speeds = Vec::with_capacity(times_s.len().min(positions_m.len()));
+    for_each_window(
+        times_s,
+        positions_m,
+        (window_s, before_start_mps),
+        |displacement, elapsed_s| {
+            speeds.push(if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
+                0.0
+            } else {
+                displacement.length() / elapsed_s
+            });
+        },
+    );
+    speeds
+}
+
+/// Calls `observe` with the displacement over the window ending at each
+/// sample and the window's length, seconds ([`over_ground_from`]).
+fn for_each_window(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    (window_s, before_start_mps): (f64, Option<DVec2>),
+    mut observe: impl FnMut(DVec2, f64),
+) {
     let count = times_s.len().min(positions_m.len());
     let (times_s, positions_m) = (&times_s[..count], &positions_m[..count]);
-    let mut observed = Vec::with_capacity(count);
-    let mut last_course = 0.0;
+    // The windows' starts move forward with the samples: each is found
+    // from where the last one was.
+    let mut cursor = 0;
     for index in 0..count {
         let (displacement, elapsed_s) = if let Some(velocity) = before_start_mps {
             let from_s = times_s[index] - window_s;
             let from_m = if from_s < times_s[0] {
                 positions_m[0] + velocity * (from_s - times_s[0])
             } else {
-                position_at(times_s, positions_m, from_s, index)
+                position_at(times_s, positions_m, from_s, (index, &mut cursor))
             };
             (positions_m[index] - from_m, window_s)
         } else if index == 0 {
@@ -91,31 +149,38 @@ pub fn over_ground_from(
             }
         } else {
             let from_s = (times_s[index] - window_s).max(times_s[0]);
-            let from_m = position_at(times_s, positions_m, from_s, index);
+            let from_m = position_at(times_s, positions_m, from_s, (index, &mut cursor));
             (positions_m[index] - from_m, times_s[index] - from_s)
         };
-        let (course_rad, speed_mps) = if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
-            (last_course, 0.0)
-        } else {
-            (
-                angle::unit_to_course(displacement),
-                displacement.length() / elapsed_s,
-            )
-        };
-        last_course = course_rad;
-        observed.push(OverGround {
-            course_rad,
-            speed_mps,
-        });
+        observe(displacement, elapsed_s);
     }
-    observed
 }
 
 /// The position at `at_s`, interpolated between the samples at or before
-/// `upto` (the sample whose window this is).
-fn position_at(times_s: &[f64], positions_m: &[DVec2], at_s: f64, upto: usize) -> DVec2 {
-    // The last sample at or before `at_s`.
-    let after = times_s[..=upto].partition_point(|t| *t <= at_s);
+/// `upto` (the sample whose window this is). `cursor` is the first sample
+/// after the last time asked: searched on from there while the times asked
+/// do not go back, else from the start.
+fn position_at(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    at_s: f64,
+    (upto, cursor): (usize, &mut usize),
+) -> DVec2 {
+    // The first sample after `at_s` (the last at or before it is the one
+    // before), as `partition_point` finds it in increasing times.
+    let mut after = (*cursor).min(upto + 1);
+    if after > 0
+        && matches!(
+            times_s[after - 1].partial_cmp(&at_s),
+            Some(std::cmp::Ordering::Greater) | None
+        )
+    {
+        after = times_s[..=upto].partition_point(|t| *t <= at_s);
+    }
+    while after <= upto && times_s[after] <= at_s {
+        after += 1;
+    }
+    *cursor = after;
     let before = after.saturating_sub(1);
     if after > upto || after == 0 {
         return positions_m[before];
@@ -127,4 +192,80 @@ fn position_at(times_s: &[f64], positions_m: &[DVec2], at_s: f64, upto: usize) -
         0.0
     };
     positions_m[before].lerp(positions_m[after], fraction)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// `position_at` as it was before the cursor: a binary search of every
+    /// sample up to `upto`.
+    fn position_at_searched(
+        times_s: &[f64],
+        positions_m: &[DVec2],
+        at_s: f64,
+        upto: usize,
+    ) -> DVec2 {
+        let after = times_s[..=upto].partition_point(|t| *t <= at_s);
+        let before = after.saturating_sub(1);
+        if after > upto || after == 0 {
+            return positions_m[before];
+        }
+        let (t0, t1) = (times_s[before], times_s[after]);
+        let fraction = if t1 > t0 {
+            ((at_s - t0) / (t1 - t0)).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        positions_m[before].lerp(positions_m[after], fraction)
+    }
+
+    /// Increasing times at irregular steps, and positions anywhere.
+    fn track() -> impl Strategy<Value = (Vec<f64>, Vec<DVec2>)> {
+        prop::collection::vec((0.5f64..30.0, -500.0f64..500.0, -500.0f64..500.0), 1..60).prop_map(
+            |steps| {
+                let mut time_s = 0.0;
+                steps
+                    .into_iter()
+                    .map(|(step_s, east_m, north_m)| {
+                        time_s += step_s;
+                        (time_s, DVec2::new(east_m, north_m))
+                    })
+                    .unzip()
+            },
+        )
+    }
+
+    proptest! {
+        #[test]
+        fn the_cursor_finds_what_the_search_finds(
+            (times_s, positions_m) in track(),
+            window_s in 1.0f64..200.0,
+            going_back in 0usize..60,
+        ) {
+            let mut cursor = 0;
+            for upto in 0..times_s.len() {
+                // A time asked earlier than the last one is searched afresh.
+                let back_s = if upto == going_back { 2.0 * window_s } else { 0.0 };
+                let at_s = times_s[upto] - window_s - back_s;
+                let found = position_at(&times_s, &positions_m, at_s, (upto, &mut cursor));
+                let searched = position_at_searched(&times_s, &positions_m, at_s, upto);
+                prop_assert_eq!(found, searched);
+            }
+        }
+
+        #[test]
+        fn speeds_alone_are_those_of_the_courses_and_speeds(
+            (times_s, positions_m) in track(),
+            window_s in 1.0f64..200.0,
+            before in prop::option::of((-8.0f64..8.0, -8.0f64..8.0)),
+        ) {
+            let before_mps = before.map(|(east, north)| DVec2::new(east, north));
+            let observed = over_ground_from(&times_s, &positions_m, window_s, before_mps);
+            let speeds = speeds_over_ground_from(&times_s, &positions_m, window_s, before_mps);
+            let expected: Vec<f64> = observed.iter().map(|over| over.speed_mps).collect();
+            prop_assert_eq!(speeds, expected);
+        }
+    }
 }
