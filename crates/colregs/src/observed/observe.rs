@@ -181,6 +181,18 @@ fn position_at(
         after += 1;
     }
     *cursor = after;
+    interpolated(times_s, positions_m, at_s, (after, upto))
+}
+
+/// The position at `at_s` between the sample before `after` and `after`
+/// (the first sample after `at_s`); at the first sample, or at `upto`'s
+/// when no sample up to it is after `at_s`.
+fn interpolated(
+    times_s: &[f64],
+    positions_m: &[DVec2],
+    at_s: f64,
+    (after, upto): (usize, usize),
+) -> DVec2 {
     let before = after.saturating_sub(1);
     if after > upto || after == 0 {
         return positions_m[before];
@@ -208,17 +220,7 @@ mod tests {
         upto: usize,
     ) -> DVec2 {
         let after = times_s[..=upto].partition_point(|t| *t <= at_s);
-        let before = after.saturating_sub(1);
-        if after > upto || after == 0 {
-            return positions_m[before];
-        }
-        let (t0, t1) = (times_s[before], times_s[after]);
-        let fraction = if t1 > t0 {
-            ((at_s - t0) / (t1 - t0)).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        positions_m[before].lerp(positions_m[after], fraction)
+        interpolated(times_s, positions_m, at_s, (after, upto))
     }
 
     /// Increasing times at irregular steps, and positions anywhere.

@@ -26,11 +26,11 @@ pub const RETRY_AFTER_S: f64 = 20.0;
 /// How many times the wait between retries ([`RETRY_AFTER_S`]) doubles
 /// while retry after retry keeps the plan in force, so that it grows to at
 /// most 160 s (decision 76). A retry that finds nothing better is a search
-/// of every stricter level spent for nothing; in dense traffic one fell due
-/// at almost every fourth step, and retries were half the planning time of
-/// a run with 100 targets. The wait starts again from [`RETRY_AFTER_S`]
-/// whenever a plan is put in force, and a change of the encounters in
-/// force still asks at once.
+/// of every stricter level spent for nothing: the generated run with 100
+/// targets retried 136 times in 6900 s, and 134 of them kept the plan in
+/// force; with the wait doubling it takes half the time. The wait starts
+/// again from [`RETRY_AFTER_S`] whenever a plan is put in force, and a
+/// change of the encounters in force still asks at once.
 pub const RETRY_DOUBLINGS: u32 = 3;
 
 /// A target's predicted return to its route that moves by more than this
@@ -107,6 +107,8 @@ impl RetryTimer {
         self.wait_from(time_s, encounters);
     }
 
+    /// The next retry is due after the wait for `kept_in_a_row`, from
+    /// `time_s`, or when `encounters` change.
     fn wait_from(&mut self, time_s: f64, encounters: &[Option<EncounterLatch>]) {
         let doublings = self.kept_in_a_row.min(RETRY_DOUBLINGS);
         self.at_s = time_s + RETRY_AFTER_S * f64::from(1_u32 << doublings);
