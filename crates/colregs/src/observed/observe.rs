@@ -78,13 +78,9 @@ pub fn over_ground_from(
         positions_m,
         (window_s, before_start_mps),
         |displacement, elapsed_s| {
-            let (course_rad, speed_mps) = if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
-                (last_course, 0.0)
-            } else {
-                (
-                    angle::unit_to_course(displacement),
-                    displacement.length() / elapsed_s,
-                )
+            let (course_rad, speed_mps) = match speed_if_moved_mps(displacement, elapsed_s) {
+                Some(speed_mps) => (angle::unit_to_course(displacement), speed_mps),
+                None => (last_course, 0.0),
             };
             last_course = course_rad;
             observed.push(OverGround {
@@ -110,14 +106,23 @@ pub(super) fn speeds_over_ground_from(
         positions_m,
         (window_s, before_start_mps),
         |displacement, elapsed_s| {
-            speeds.push(if displacement.length() <= STILL_M || elapsed_s <= 0.0 {
-                0.0
-            } else {
-                displacement.length() / elapsed_s
-            });
+            speeds.push(speed_if_moved_mps(displacement, elapsed_s).unwrap_or(0.0));
         },
     );
     speeds
+}
+
+/// The speed over a window of `elapsed_s` in which the vessel moved by
+/// `displacement`, m/s; `None` where it did not move ([`STILL_M`]) or the
+/// window is empty.
+fn speed_if_moved_mps(displacement: DVec2, elapsed_s: f64) -> Option<f64> {
+    let moved_m = displacement.length();
+    // The test is for standing still, as it was: a NaN is not still.
+    if moved_m <= STILL_M || elapsed_s <= 0.0 {
+        None
+    } else {
+        Some(moved_m / elapsed_s)
+    }
 }
 
 /// Calls `observe` with the displacement over the window ending at each
